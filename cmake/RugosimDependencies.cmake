@@ -1,0 +1,23 @@
+# Every dependency comes from a Debian 12 package (cmake/install-deps.sh installs them).
+find_package(PkgConfig REQUIRED)
+
+# Engine: linear algebra.
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+
+# Application: command line, formatting, scene files.
+find_package(fmt REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(nlohmann_json 3.11 REQUIRED)
+
+# Renderer: off-screen GL (OSMesa, EGL), PNG, and FFmpeg for MP4.
+pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
+pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)
+pkg_check_modules(PNG REQUIRED IMPORTED_TARGET libpng)
+pkg_check_modules(LIBAV REQUIRED IMPORTED_TARGET libavcodec libavformat libavutil libswscale)
+
+if(RUGOSIM_BUILD_TESTS)
+  find_package(GTest REQUIRED)
+endif()
+if(RUGOSIM_BUILD_BENCHMARKS)
+  find_package(benchmark REQUIRED)
+endif()

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Installs, from Debian 12 packages, whatever rugosim needs to build, test and benchmark,
+# and only what is missing. Safe to run again: with everything present it installs nothing.
+# Usage: cmake/install-deps.sh        (as root, or with sudo available)
+set -euo pipefail
+
+packages=(
+  # toolchain
+  g++ cmake ninja-build pkg-config git
+  # engine
+  libeigen3-dev
+  # application: CLI, formatting, scene files
+  libcli11-dev libfmt-dev nlohmann-json3-dev
+  # renderer: off-screen OpenGL, PNG, MP4 (H.264 through libx264)
+  libosmesa6-dev libegl-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri libpng-dev
+  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
+  # tests and benchmarks
+  libgtest-dev libgmock-dev libbenchmark-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present, nothing to install."
+  exit 0
+fi
+
+echo "install-deps: installing ${#missing[@]} missing package(s): ${missing[*]}"
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null 2>&1 || { echo "install-deps: not root and no sudo; install as root: apt-get install ${missing[*]}" >&2; exit 1; }
+  sudo_cmd=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+echo "install-deps: done."

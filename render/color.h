@@ -1,0 +1,17 @@
+// Colours as the scene file writes them ("#rrggbb" or "#rrggbbaa") and as GL wants them.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+namespace rugosim {
+
+struct Rgba {
+  std::array<float, 4> channels{0.f, 0.f, 0.f, 1.f};  // red, green, blue, alpha in [0, 1]
+};
+
+// nullopt when the text is not '#' followed by 6 or 8 hexadecimal digits.
+std::optional<Rgba> parse_hex_color(std::string_view text);
+
+}  // namespace rugosim
