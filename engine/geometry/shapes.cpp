@@ -1,0 +1,146 @@
+#include "engine/geometry/shapes.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "engine/core/random.h"
+
+namespace rugosim {
+
+namespace {
+
+void require_segments(std::size_t n) {
+  if (n < 4) throw std::invalid_argument("segments must be >= 4, got " + std::to_string(n));
+}
+
+void require_positive(double value, const char* what) {
+  if (!(std::isfinite(value) && value > 0.0)) {
+    throw std::invalid_argument(std::string(what) + " must be finite and > 0, got " +
+                                std::to_string(value));
+  }
+}
+
+double angle_of(std::size_t i, std::size_t n) {
+  return 2.0 * std::numbers::pi * static_cast<double>(i) / static_cast<double>(n);
+}
+
+}  // namespace
+
+double circle_control_radius(double radius, std::size_t n) {
+  const double step = 2.0 * std::numbers::pi / static_cast<double>(n);
+  return radius * 6.0 / (4.0 + 2.0 * std::cos(step));
+}
+
+std::vector<Vec2> circle_control_points(double radius, std::size_t n) {
+  return ellipse_control_points(radius, radius, n);
+}
+
+std::vector<Vec2> ellipse_control_points(double a, double b, std::size_t n) {
+  require_segments(n);
+  require_positive(a, "ellipse radius a");
+  require_positive(b, "ellipse radius b");
+  const double scale = circle_control_radius(1.0, n);
+  std::vector<Vec2> points(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle = angle_of(i, n);
+    points[i] = Vec2(scale * a * std::cos(angle), scale * b * std::sin(angle));
+  }
+  return points;
+}
+
+std::vector<Vec2> box_control_points(double width, double height, std::size_t n) {
+  require_segments(n);
+  require_positive(width, "box width");
+  require_positive(height, "box height");
+  const double hw = 0.5 * width, hh = 0.5 * height;
+  const std::array<Vec2, 4> corners = {Vec2(-hw, -hh), Vec2(hw, -hh), Vec2(hw, hh), Vec2(-hw, hh)};
+  const std::array<double, 4> lengths = {width, height, width, height};
+  const double perimeter = 2.0 * (width + height);
+  std::vector<Vec2> points;
+  points.reserve(n);
+
+  if (n < kSharpBoxMinSegments) {
+    // Evenly spaced along the perimeter, starting at a corner.
+    for (std::size_t i = 0; i < n; ++i) {
+      double s = perimeter * static_cast<double>(i) / static_cast<double>(n);
+      std::size_t edge = 0;
+      while (edge < 3 && s > lengths[edge])
+        s -= lengths[edge++];
+      const Vec2& from = corners[edge];
+      const Vec2& to = corners[(edge + 1) % 4];
+      points.push_back(from + (s / lengths[edge]) * (to - from));
+    }
+    return points;
+  }
+
+  // Share the points left after the corners among the edges by length (largest remainder),
+  // so the spacing is as even as possible and the result is deterministic.
+  const std::size_t spare = n - kSharpBoxMinSegments;
+  std::array<std::size_t, 4> counts{};
+  std::array<double, 4> remainders{};
+  std::size_t assigned = 0;
+  for (std::size_t e = 0; e < 4; ++e) {
+    const double exact = static_cast<double>(spare) * lengths[e] / perimeter;
+    counts[e] = static_cast<std::size_t>(std::floor(exact));
+    remainders[e] = exact - std::floor(exact);
+    assigned += counts[e];
+  }
+  while (assigned < spare) {
+    const auto best = static_cast<std::size_t>(
+        std::max_element(remainders.begin(), remainders.end()) - remainders.begin());
+    ++counts[best];
+    remainders[best] = -1.0;
+    ++assigned;
+  }
+  for (std::size_t e = 0; e < 4; ++e) {
+    for (int k = 0; k < 3; ++k)
+      points.push_back(corners[e]);
+    const Vec2& from = corners[e];
+    const Vec2& to = corners[(e + 1) % 4];
+    for (std::size_t k = 1; k <= counts[e]; ++k) {
+      const double f = static_cast<double>(k) / static_cast<double>(counts[e] + 1);
+      points.push_back(from + f * (to - from));
+    }
+  }
+  return points;
+}
+
+std::vector<Vec2> blob_control_points(double radius, double irregularity, std::size_t n,
+                                      std::uint64_t seed) {
+  require_segments(n);
+  require_positive(radius, "blob radius");
+  if (!(irregularity >= 0.0 && irregularity <= kMaxBlobIrregularity)) {
+    throw std::invalid_argument("blob irregularity must be in [0, 0.9], got " +
+                                std::to_string(irregularity));
+  }
+  constexpr int kLowest = 2, kHighest = 6;
+  std::array<double, kHighest + 1> amplitude{};
+  std::array<double, kHighest + 1> phase{};
+  Rng rng(seed);
+  double total = 0.0;
+  for (int k = kLowest; k <= kHighest; ++k) {
+    // Falling with the order so the outline is lumpy rather than spiky.
+    amplitude[static_cast<std::size_t>(k)] = rng.uniform(0.2, 1.0) / k;
+    phase[static_cast<std::size_t>(k)] = rng.uniform(0.0, 2.0 * std::numbers::pi);
+    total += amplitude[static_cast<std::size_t>(k)];
+  }
+  const double scale = circle_control_radius(radius, n);
+  std::vector<Vec2> points(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle = angle_of(i, n);
+    double g = 0.0;
+    for (int k = kLowest; k <= kHighest; ++k) {
+      const auto kk = static_cast<std::size_t>(k);
+      g += amplitude[kk] * std::cos(k * angle + phase[kk]);
+    }
+    const double r = scale * (1.0 + irregularity * g / total);
+    points[i] = Vec2(r * std::cos(angle), r * std::sin(angle));
+  }
+  return points;
+}
+
+}  // namespace rugosim

@@ -1,0 +1,39 @@
+// Shape generators of the scene format (INTERFACE.md, "Shapes"): control polygons, in the body
+// frame and counter-clockwise, for the closed periodic cubic B-spline of a body. Each throws
+// std::invalid_argument with the reason when a parameter is out of range.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "engine/core/types.h"
+
+namespace rugosim {
+
+// Radius of the control polygon whose B-spline passes through radius r at every knot: a
+// uniform cubic B-spline pulls a regular polygon in by (4 + 2 cos(2π/n)) / 6 at the knots.
+double circle_control_radius(double radius, std::size_t n);
+
+// A circle of radius r (m) centred at the origin; knot points lie exactly on it, the curve
+// bulges out between knots by a relative O(n^-4) amount.
+std::vector<Vec2> circle_control_points(double radius, std::size_t n);
+
+// An ellipse with semi-axes a (along x) and b (along y), the affine image of the circle.
+std::vector<Vec2> ellipse_control_points(double a, double b, std::size_t n);
+
+// A w x h rectangle centred at the origin. With n >= 12 each corner is a triple control point,
+// every segment is straight and the curve is exactly the rectangle (the tangent vanishes at
+// the four corners). With 4 <= n < 12 the points are spread evenly along the perimeter and
+// the corners are rounded, inside the rectangle.
+std::vector<Vec2> box_control_points(double width, double height, std::size_t n);
+inline constexpr std::size_t kSharpBoxMinSegments = 12;
+
+// A random irregular outline: radius r·(1 + a·g(θ)) with g a seeded sum of low harmonics
+// (orders 2..6) scaled so |g| <= 1; a in [0, 0.9]. Concave for large a; always star-shaped
+// around the origin, and the same seed gives the same outline.
+std::vector<Vec2> blob_control_points(double radius, double irregularity, std::size_t n,
+                                      std::uint64_t seed);
+inline constexpr double kMaxBlobIrregularity = 0.9;
+
+}  // namespace rugosim
