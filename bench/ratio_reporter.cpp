@@ -1,0 +1,65 @@
+#include "ratio_reporter.h"
+
+#include <cstdio>
+
+namespace rugosim::bench {
+
+namespace {
+// Splits "family/variant/args" at the first two slashes.
+bool split_name(const std::string& name, std::string& family, std::string& variant,
+                std::string& args) {
+  const auto first = name.find('/');
+  if (first == std::string::npos) return false;
+  const auto second = name.find('/', first + 1);
+  family = name.substr(0, first);
+  variant =
+      name.substr(first + 1, second == std::string::npos ? std::string::npos : second - first - 1);
+  args = second == std::string::npos ? "" : name.substr(second + 1);
+  return true;
+}
+}  // namespace
+
+void RatioReporter::ReportRuns(const std::vector<Run>& runs) {
+  for (const Run& run : runs) {
+    if (run.error_occurred || run.run_type != Run::RT_Iteration) continue;
+    Entry e;
+    if (!split_name(run.benchmark_name(), e.family, e.variant, e.args)) continue;
+    e.ns_per_iteration = run.GetAdjustedRealTime() *
+                         benchmark::GetTimeUnitMultiplier(benchmark::kNanosecond) /
+                         benchmark::GetTimeUnitMultiplier(run.time_unit);
+    entries_.push_back(e);
+  }
+  ConsoleReporter::ReportRuns(runs);
+}
+
+void RatioReporter::Finalize() {
+  ConsoleReporter::Finalize();
+  std::map<std::string, double> baseline;  // family + args -> ns
+  for (const Entry& e : entries_) {
+    if (e.variant == "baseline") baseline[e.family + "/" + e.args] = e.ns_per_iteration;
+  }
+  std::printf("\n| benchmark | args | time / baseline |\n|---|---|---|\n");
+  for (const Entry& e : entries_) {
+    if (e.variant == "baseline") continue;
+    const auto it = baseline.find(e.family + "/" + e.args);
+    if (it == baseline.end() || it->second <= 0.0) {
+      std::printf("| %s/%s | %s | (no baseline) |\n", e.family.c_str(), e.variant.c_str(),
+                  e.args.c_str());
+    } else {
+      std::printf("| %s/%s | %s | %.3f |\n", e.family.c_str(), e.variant.c_str(), e.args.c_str(),
+                  e.ns_per_iteration / it->second);
+    }
+  }
+  std::fflush(stdout);
+}
+
+int run_with_ratios(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}
+
+}  // namespace rugosim::bench

@@ -1,0 +1,33 @@
+// Benchmarks report ratios against a baseline measured in the same run, because a shared
+// machine's absolute timings drift from run to run while ratios hold.
+//
+// Naming rule: a benchmark named "<family>/<variant>/<args...>" is compared with the run named
+// "<family>/baseline/<args...>" (same family and arguments). The console output of Google
+// Benchmark is kept; a Markdown table of ratios follows it.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+namespace rugosim::bench {
+
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override;
+  void Finalize() override;
+
+ private:
+  struct Entry {
+    std::string family, variant, args;
+    double ns_per_iteration = 0.0;
+  };
+  std::vector<Entry> entries_;
+};
+
+// Runs every registered benchmark with the ratio table: use as the body of main().
+int run_with_ratios(int argc, char** argv);
+
+}  // namespace rugosim::bench
