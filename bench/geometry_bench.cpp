@@ -6,6 +6,9 @@
 #include <benchmark/benchmark.h>
 
 #include "engine/core/random.h"
+#include "engine/geometry/boundary_validity.h"
+#include "engine/geometry/mass_properties.h"
+#include "engine/geometry/multiresolution.h"
 #include "engine/geometry/periodic_bspline.h"
 #include "engine/geometry/shapes.h"
 #include "engine/geometry/subdivision.h"
@@ -104,6 +107,70 @@ void curve_subdivide_and_build(benchmark::State& state) {
   }
 }
 
+// Wavelets, against one level of subdivision of the same coarse count (the synthesis with
+// zero details costs about as much, so the ratio shows what the details and analysis add).
+void wavelet_baseline(benchmark::State& state) {
+  const auto fine = blob(static_cast<std::size_t>(state.range(0)));
+  const auto coarse = decompose(fine).coarse;
+  for (auto _ : state) {
+    auto out = subdivide_control_points(coarse);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+
+void wavelet_decompose(benchmark::State& state) {
+  const auto fine = blob(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) {
+    auto level = decompose(fine);
+    benchmark::DoNotOptimize(level.coarse.data());
+  }
+}
+
+void wavelet_reconstruct(benchmark::State& state) {
+  const auto level = decompose(blob(static_cast<std::size_t>(state.range(0))));
+  for (auto _ : state) {
+    auto out = reconstruct(level.coarse, level.details);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+
+void wavelet_all_levels(benchmark::State& state) {
+  const auto fine = blob(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) {
+    Multiresolution levels(fine);
+    benchmark::DoNotOptimize(levels.control_points(levels.level_count()).data());
+  }
+}
+
+// Mass properties, against the shoelace area of the control polygon (one pass over the points:
+// the least any whole-curve computation can cost).
+void mass_baseline(benchmark::State& state) {
+  const auto points = blob(static_cast<std::size_t>(state.range(0)));
+  for (auto _ : state) {
+    double twice_area = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      twice_area += cross(points[i], points[(i + 1) % points.size()]);
+    }
+    benchmark::DoNotOptimize(twice_area);
+  }
+}
+
+void mass_exact_green(benchmark::State& state) {
+  const PeriodicBSpline curve(blob(static_cast<std::size_t>(state.range(0))));
+  for (auto _ : state) {
+    const MassProperties props = compute_mass_properties(curve);
+    benchmark::DoNotOptimize(props.polar_moment);
+  }
+}
+
+void mass_validity(benchmark::State& state) {
+  const PeriodicBSpline curve(blob(static_cast<std::size_t>(state.range(0))));
+  for (auto _ : state) {
+    const ValidityReport report = check_boundary(curve);
+    benchmark::DoNotOptimize(report.valid);
+  }
+}
+
 #define RUGOSIM_SIZES RangeMultiplier(4)->Range(16, 1024)
 BENCHMARK(eval_baseline)->Name("eval/baseline")->RUGOSIM_SIZES;
 BENCHMARK(eval_power_basis)->Name("eval/power_basis")->RUGOSIM_SIZES;
@@ -111,6 +178,13 @@ BENCHMARK(eval_point_and_derivatives)->Name("eval/point_d1_d2")->RUGOSIM_SIZES;
 BENCHMARK(curve_baseline)->Name("curve/baseline")->RUGOSIM_SIZES;
 BENCHMARK(curve_subdivide_points)->Name("curve/subdivide_points")->RUGOSIM_SIZES;
 BENCHMARK(curve_subdivide_and_build)->Name("curve/subdivide_and_build")->RUGOSIM_SIZES;
+BENCHMARK(wavelet_baseline)->Name("wavelet/baseline")->RUGOSIM_SIZES;
+BENCHMARK(wavelet_decompose)->Name("wavelet/decompose")->RUGOSIM_SIZES;
+BENCHMARK(wavelet_reconstruct)->Name("wavelet/reconstruct")->RUGOSIM_SIZES;
+BENCHMARK(wavelet_all_levels)->Name("wavelet/all_levels")->RUGOSIM_SIZES;
+BENCHMARK(mass_baseline)->Name("whole_curve/baseline")->RUGOSIM_SIZES;
+BENCHMARK(mass_exact_green)->Name("whole_curve/mass_properties")->RUGOSIM_SIZES;
+BENCHMARK(mass_validity)->Name("whole_curve/check_boundary")->RUGOSIM_SIZES;
 
 }  // namespace
 }  // namespace rugosim
