@@ -15,8 +15,9 @@ namespace rugosim {
 // uniform cubic B-spline pulls a regular polygon in by (4 + 2 cos(2π/n)) / 6 at the knots.
 double circle_control_radius(double radius, std::size_t n);
 
-// A circle of radius r (m) centred at the origin; knot points lie exactly on it, the curve
-// bulges out between knots by a relative O(n^-4) amount.
+// A circle of radius r (m) centred at the origin; knot points lie exactly on it, and between
+// knots the curve dips inside it by about 0.0026·(2π/n)⁴·r (the area falls short of πr² by
+// about 4.3/n⁴ of it).
 std::vector<Vec2> circle_control_points(double radius, std::size_t n);
 
 // An ellipse with semi-axes a (along x) and b (along y), the affine image of the circle.

@@ -6,6 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/core/random.h"
+#include "engine/geometry/boundary_validity.h"
+#include "engine/geometry/mass_properties.h"
+#include "engine/geometry/orientation.h"
 #include "engine/geometry/periodic_bspline.h"
 
 namespace rugosim {
@@ -20,7 +24,7 @@ TEST(Shapes, CircleKnotsLieOnTheCircleAndTheCurveHugsIt) {
       for (int k = 0; k <= 20; ++k)
         worst = std::max(worst, std::abs(curve.point(j, k / 20.0).norm() - 2.0));
     }
-    // The bulge between knots falls like h^4, h = 2π/n (measured: 0.0046 h^4 at n = 4,
+    // The dip inside the circle between knots falls like h^4, h = 2π/n (measured: 0.0046 h^4 at n = 4,
     // 0.0026 h^4 from n = 32 on, that is 3.9e-6 r at n = 32).
     const double step = 2.0 * std::numbers::pi / static_cast<double>(n);
     EXPECT_LE(worst / 2.0, 0.005 * std::pow(step, 4)) << n;
@@ -82,6 +86,43 @@ TEST(Shapes, BlobIsSeededBoundedAndCounterClockwise) {
   const auto circle = circle_control_points(1.0, 48);
   for (std::size_t i = 0; i < 48; ++i)
     EXPECT_NEAR((round[i] - circle[i]).norm(), 0.0, 1e-14);
+}
+
+TEST(Shapes, EveryGeneratedShapeIsAValidCounterClockwiseBoundary) {
+  Rng rng(31);
+  for (int c = 0; c < 300; ++c) {
+    const auto n = static_cast<std::size_t>(
+        std::lround(std::exp(rng.uniform(std::log(4.0), std::log(1024.0)))));
+    const double size = std::pow(10.0, rng.uniform(-3.0, 3.0));
+    const double irregularity = rng.uniform(0.0, kMaxBlobIrregularity);
+    for (const auto& points :
+         {circle_control_points(size, n), ellipse_control_points(size, 0.1 * size, n),
+          box_control_points(size, 0.05 * size, n),
+          blob_control_points(size, irregularity, n, rng.next_u64())}) {
+      const PeriodicBSpline curve(points);
+      const ValidityReport report = check_boundary(curve);
+      ASSERT_TRUE(report.valid) << "case " << c << " n " << n << ": " << report.reason;
+      EXPECT_TRUE(is_counter_clockwise(curve));
+    }
+  }
+}
+
+TEST(Shapes, SplineCircleApproachesTheDiskAreaAndInertia) {
+  // Area -> πr² and inertia -> ½ m r², with the error falling like n^-4.
+  double previous_error = 1.0;
+  for (std::size_t n : {8u, 32u, 128u, 512u}) {
+    const MassProperties props =
+        compute_mass_properties(PeriodicBSpline(circle_control_points(0.5, n)));
+    const double disk_area = std::numbers::pi * 0.25;
+    const double area_error = std::abs(props.area / disk_area - 1.0);
+    const double inertia_error =
+        std::abs(props.inertia(7.0) / (0.5 * props.mass(7.0) * 0.25) - 1.0);
+    EXPECT_LE(area_error, 6.0 / std::pow(static_cast<double>(n), 4)) << n;
+    EXPECT_LE(inertia_error, 12.0 / std::pow(static_cast<double>(n), 4)) << n;
+    EXPECT_LE(props.centroid.norm(), 1e-15);
+    EXPECT_LT(area_error, previous_error / 100.0);
+    previous_error = area_error;
+  }
 }
 
 TEST(Shapes, RejectBadParameters) {
