@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/core/random.h"
+#include "engine/geometry/shapes.h"
 #include "engine/geometry/subdivision.h"
 #include "support/random_curves.h"
 
@@ -25,16 +26,11 @@ using testing::random_segment_count;
 
 constexpr int kCases = 300;
 
-// Control points on a circle of radius R·6/(4 + 2 cos(2π/n)): the knot points
-// (c_{k−1} + 4 c_k + c_{k+1})/6 then lie on the circle of radius R.
+// The shape generator's circle (knot points on radius R), moved to `centre`.
 std::vector<Vec2> spline_circle(std::size_t n, double radius, const Vec2& centre) {
-  const double step = 2.0 * std::numbers::pi / static_cast<double>(n);
-  const double control_radius = radius * 6.0 / (4.0 + 2.0 * std::cos(step));
-  std::vector<Vec2> points(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double angle = step * static_cast<double>(i);
-    points[i] = centre + control_radius * Vec2(std::cos(angle), std::sin(angle));
-  }
+  std::vector<Vec2> points = circle_control_points(radius, n);
+  for (Vec2& p : points)
+    p += centre;
   return points;
 }
 

@@ -24,8 +24,8 @@ TEST(Shapes, CircleKnotsLieOnTheCircleAndTheCurveHugsIt) {
       for (int k = 0; k <= 20; ++k)
         worst = std::max(worst, std::abs(curve.point(j, k / 20.0).norm() - 2.0));
     }
-    // The dip inside the circle between knots falls like h^4, h = 2π/n (measured: 0.0046 h^4 at n = 4,
-    // 0.0026 h^4 from n = 32 on, that is 3.9e-6 r at n = 32).
+    // The dip inside the circle between knots falls like h^4, h = 2π/n (measured: 0.0046 h^4 at n =
+    // 4, 0.0026 h^4 from n = 32 on, that is 3.9e-6 r at n = 32).
     const double step = 2.0 * std::numbers::pi / static_cast<double>(n);
     EXPECT_LE(worst / 2.0, 0.005 * std::pow(step, 4)) << n;
   }
