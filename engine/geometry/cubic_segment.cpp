@@ -23,4 +23,14 @@ Aabb CubicSegment::hull_bounds() const {
   return box;
 }
 
+CubicSegment CubicSegment::transformed(const Transform2& x) const {
+  CubicSegment out;
+  out.power_[0] = x.apply(power_[0]);
+  for (std::size_t k = 1; k < 4; ++k)
+    out.power_[k] = x.rotate(power_[k]);
+  for (std::size_t k = 0; k < 4; ++k)
+    out.bezier_[k] = x.apply(bezier_[k]);
+  return out;
+}
+
 }  // namespace rugosim

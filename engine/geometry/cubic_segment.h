@@ -6,6 +6,7 @@
 #include <array>
 
 #include "engine/core/aabb.h"
+#include "engine/core/transform.h"
 #include "engine/core/types.h"
 
 namespace rugosim {
@@ -36,6 +37,9 @@ class CubicSegment {
 
   // Axis-aligned box of the Bezier control polygon: it contains the whole segment.
   Aabb hull_bounds() const;
+
+  // The same segment placed by x (body frame to world): exact, since placement is affine.
+  CubicSegment transformed(const Transform2& x) const;
 
  private:
   std::array<Vec2, 4> power_{};

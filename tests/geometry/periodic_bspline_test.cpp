@@ -153,3 +153,27 @@ TEST(Subdivision, ReproducesTheCurveExactly) {
 
 }  // namespace
 }  // namespace rugosim
+
+namespace rugosim {
+namespace {
+
+TEST(CubicSegment, TransformedSegmentIsThePlacedCurve) {
+  Rng rng(8);
+  for (int c = 0; c < 200; ++c) {
+    const auto points = testing::random_control_polygon(rng, 4);
+    const CubicSegment s(points[0], points[1], points[2], points[3]);
+    const Transform2 x(rng.uniform(-4, 4), Vec2(rng.uniform(-9, 9), rng.uniform(-9, 9)));
+    const CubicSegment placed = s.transformed(x);
+    const double scale = testing::extent_of(points) + points[0].norm() + 10.0;
+    for (double t : {0.0, 0.3, 0.5, 1.0}) {
+      EXPECT_LE((placed.point(t) - x.apply(s.point(t))).norm(), 1e-13 * scale);
+      EXPECT_LE((placed.derivative(t) - x.rotate(s.derivative(t))).norm(), 1e-13 * scale);
+    }
+    for (std::size_t k = 0; k < 4; ++k) {
+      EXPECT_LE((placed.bezier()[k] - x.apply(s.bezier()[k])).norm(), 1e-13 * scale);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rugosim
