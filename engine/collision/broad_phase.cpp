@@ -1,0 +1,86 @@
+#include "engine/collision/broad_phase.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace rugosim {
+
+namespace {
+
+// Variance of the box centres along an axis: sweeping along the axis where they spread most
+// keeps the intervals that overlap on it, and so the candidates, few.
+double spread(std::span<const BroadPhaseProxy> proxies, int axis) {
+  double sum = 0.0, sum_sq = 0.0;
+  for (const BroadPhaseProxy& p : proxies) {
+    const double c = p.box.center()[axis];
+    sum += c;
+    sum_sq += c * c;
+  }
+  const double n = static_cast<double>(proxies.size());
+  return sum_sq / n - (sum / n) * (sum / n);
+}
+
+}  // namespace
+
+const std::vector<BodyPair>& SweepAndPrune::find_pairs(std::span<const BroadPhaseProxy> proxies) {
+  pairs_.clear();
+  const auto count = static_cast<std::uint32_t>(proxies.size());
+  if (count < 2) return pairs_;
+
+  // Keep the current axis unless the other one is clearly better: flipping between two nearly
+  // equal axes would throw the kept order away every call.
+  const double along_x = spread(proxies, 0), along_y = spread(proxies, 1);
+  int axis = axis_;
+  if (order_.size() != count) {
+    axis = along_x >= along_y ? 0 : 1;
+  } else if ((axis_ == 0 ? along_y : along_x) > 2.0 * (axis_ == 0 ? along_x : along_y)) {
+    axis = 1 - axis_;
+  }
+  if (order_.size() != count || axis != axis_) {
+    order_.resize(count);
+    std::iota(order_.begin(), order_.end(), 0u);
+    axis_ = axis;
+  }
+  // Ties broken by index so that the order, and hence the work, is deterministic.
+  auto before = [&](std::uint32_t i, std::uint32_t j) {
+    const double mi = proxies[i].box.min[axis_], mj = proxies[j].box.min[axis_];
+    return mi < mj || (mi == mj && i < j);
+  };
+  // Insertion sort: linear when the previous order is nearly right (coherent motion), and
+  // std::sort's n log n when it is not.
+  std::size_t inversions = 0;
+  for (std::size_t k = 1; k < order_.size(); ++k) {
+    const std::uint32_t moving = order_[k];
+    std::size_t slot = k;
+    while (slot > 0 && before(moving, order_[slot - 1])) {
+      order_[slot] = order_[slot - 1];
+      --slot;
+      if (++inversions > 8 * order_.size()) break;
+    }
+    order_[slot] = moving;
+    if (inversions > 8 * order_.size()) {
+      std::sort(order_.begin(), order_.end(), before);
+      break;
+    }
+  }
+
+  const int other = 1 - axis_;
+  for (std::size_t k = 0; k < order_.size(); ++k) {
+    const std::uint32_t i = order_[k];
+    const Aabb& bi = proxies[i].box;
+    for (std::size_t m = k + 1; m < order_.size(); ++m) {
+      const std::uint32_t j = order_[m];
+      const Aabb& bj = proxies[j].box;
+      if (bj.min[axis_] > bi.max[axis_]) break;  // sorted: nothing further can overlap i
+      if (bj.min[other] > bi.max[other] || bi.min[other] > bj.max[other]) continue;
+      if (!pair_can_interact(proxies[i], proxies[j])) continue;
+      pairs_.push_back(i < j ? BodyPair{i, j} : BodyPair{j, i});
+    }
+  }
+  std::sort(pairs_.begin(), pairs_.end(), [](const BodyPair& p, const BodyPair& q) {
+    return p.a < q.a || (p.a == q.a && p.b < q.b);
+  });
+  return pairs_;
+}
+
+}  // namespace rugosim
