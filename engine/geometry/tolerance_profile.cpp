@@ -68,39 +68,57 @@ double ToleranceProfile::at(std::size_t j, double t) const {
   return std::max(0.0, value);
 }
 
-ToleranceRange ToleranceProfile::range() const {
+ToleranceRange ToleranceProfile::piece_range(std::size_t r, double x_lo, double x_hi) const {
+  const std::size_t n = lambda_.size();
+  const auto c = cubic_through_nodes(lambda_[(r + n - 1) % n], lambda_[r], lambda_[(r + 1) % n],
+                                     lambda_[(r + 2) % n]);
+  auto value = [&](double x) { return std::max(0.0, c[0] + x * (c[1] + x * (c[2] + x * c[3]))); };
+  ToleranceRange range{value(x_lo), value(x_lo)};
+  auto include = [&](double v) {
+    range.lo = std::min(range.lo, v);
+    range.hi = std::max(range.hi, v);
+  };
+  include(value(x_hi));
+  // The nodes are exact in Lagrange form; the power basis may round them.
+  if (x_lo == 1.0) include(lambda_[r]);
+  if (x_hi == 2.0) include(lambda_[(r + 1) % n]);
+  // Interior extrema: roots of p'(x) = c1 + 2 c2 x + 3 c3 x^2 inside (x_lo, x_hi).
+  const double qa = 3.0 * c[3], qb = 2.0 * c[2], qc = c[1];
+  std::array<double, 2> roots{};
+  std::size_t root_count = 0;
+  if (qa == 0.0) {
+    if (qb != 0.0) roots[root_count++] = -qc / qb;
+  } else {
+    const double disc = qb * qb - 4.0 * qa * qc;
+    if (disc >= 0.0) {
+      // Numerically stable pair of roots.
+      const double s = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
+      if (s != 0.0) roots[root_count++] = qc / s;
+      roots[root_count++] = s / qa;
+    }
+  }
+  for (std::size_t k = 0; k < root_count; ++k) {
+    if (roots[k] > x_lo && roots[k] < x_hi) include(value(roots[k]));
+  }
+  return range;
+}
+
+ToleranceRange ToleranceProfile::segment_range(std::size_t j) const {
   if (homogeneous_) return {lambda_.front(), lambda_.front()};
   const std::size_t n = lambda_.size();
-  ToleranceRange range{lambda_.front(), lambda_.front()};
-  auto include = [&](double value) {
-    value = std::max(0.0, value);
-    range.lo = std::min(range.lo, value);
-    range.hi = std::max(range.hi, value);
-  };
-  // Piece r spans x in [1, 2]: from the midpoint of segment r to that of segment r + 1.
-  for (std::size_t r = 0; r < n; ++r) {
-    const auto c = cubic_through_nodes(lambda_[(r + n - 1) % n], lambda_[r], lambda_[(r + 1) % n],
-                                       lambda_[(r + 2) % n]);
-    auto value = [&](double x) { return c[0] + x * (c[1] + x * (c[2] + x * c[3])); };
-    include(lambda_[r]);
-    // Interior extrema: roots of p'(x) = c1 + 2 c2 x + 3 c3 x^2 inside (1, 2).
-    const double qa = 3.0 * c[3], qb = 2.0 * c[2], qc = c[1];
-    std::array<double, 2> roots{};
-    std::size_t root_count = 0;
-    if (qa == 0.0) {
-      if (qb != 0.0) roots[root_count++] = -qc / qb;
-    } else {
-      const double disc = qb * qb - 4.0 * qa * qc;
-      if (disc >= 0.0) {
-        // Numerically stable pair of roots.
-        const double s = -0.5 * (qb + std::copysign(std::sqrt(disc), qb));
-        if (s != 0.0) roots[root_count++] = qc / s;
-        roots[root_count++] = s / qa;
-      }
-    }
-    for (std::size_t k = 0; k < root_count; ++k) {
-      if (roots[k] > 1.0 && roots[k] < 2.0) include(value(roots[k]));
-    }
+  // t in [0, 1/2] is piece j-1 at x in [3/2, 2]; t in [1/2, 1] is piece j at x in [1, 3/2].
+  const ToleranceRange first = piece_range((j + n - 1) % n, 1.5, 2.0);
+  const ToleranceRange second = piece_range(j, 1.0, 1.5);
+  return {std::min(first.lo, second.lo), std::max(first.hi, second.hi)};
+}
+
+ToleranceRange ToleranceProfile::range() const {
+  if (homogeneous_) return {lambda_.front(), lambda_.front()};
+  ToleranceRange range = piece_range(0, 1.0, 2.0);
+  for (std::size_t r = 1; r < lambda_.size(); ++r) {
+    const ToleranceRange piece = piece_range(r, 1.0, 2.0);
+    range.lo = std::min(range.lo, piece.lo);
+    range.hi = std::max(range.hi, piece.hi);
   }
   return range;
 }

@@ -41,8 +41,14 @@ class ToleranceProfile {
 
   // Exact smallest and largest λ over the whole boundary (extrema of each cubic piece).
   ToleranceRange range() const;
+  // Exact smallest and largest λ_j(t) over segment j: λ_j(t) can exceed λ_j near the joints,
+  // which is what a box holding the segment's band must allow for.
+  ToleranceRange segment_range(std::size_t j) const;
 
  private:
+  // Range of cubic piece r (through λ_{r-1..r+2} at x = 0..3) over [x_lo, x_hi] ⊆ [1, 2].
+  ToleranceRange piece_range(std::size_t r, double x_lo, double x_hi) const;
+
   std::vector<double> lambda_;
   bool homogeneous_ = true;
 };
