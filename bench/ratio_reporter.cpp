@@ -1,6 +1,7 @@
 #include "ratio_reporter.h"
 
 #include <cstdio>
+#include <set>
 
 namespace rugosim::bench {
 
@@ -21,12 +22,15 @@ bool split_name(const std::string& name, std::string& family, std::string& varia
 
 void RatioReporter::ReportRuns(const std::vector<Run>& runs) {
   for (const Run& run : runs) {
-    if (run.error_occurred || run.run_type != Run::RT_Iteration) continue;
+    if (run.error_occurred) continue;
+    const bool median = run.run_type == Run::RT_Aggregate && run.aggregate_name == "median";
+    if (!median && run.run_type != Run::RT_Iteration) continue;
     Entry e;
-    if (!split_name(run.benchmark_name(), e.family, e.variant, e.args)) continue;
+    if (!split_name(run.run_name.str(), e.family, e.variant, e.args)) continue;
     e.ns_per_iteration = run.GetAdjustedRealTime() *
                          benchmark::GetTimeUnitMultiplier(benchmark::kNanosecond) /
                          benchmark::GetTimeUnitMultiplier(run.time_unit);
+    e.median = median;
     entries_.push_back(e);
   }
   ConsoleReporter::ReportRuns(runs);
@@ -34,6 +38,14 @@ void RatioReporter::ReportRuns(const std::vector<Run>& runs) {
 
 void RatioReporter::Finalize() {
   ConsoleReporter::Finalize();
+  // With repetitions, the median stands for the benchmark and its single runs are dropped.
+  std::set<std::string> with_median;
+  for (const Entry& e : entries_) {
+    if (e.median) with_median.insert(e.family + "/" + e.variant + "/" + e.args);
+  }
+  std::erase_if(entries_, [&](const Entry& e) {
+    return !e.median && with_median.count(e.family + "/" + e.variant + "/" + e.args) > 0;
+  });
   std::map<std::string, double> baseline;  // family + args -> ns
   for (const Entry& e : entries_) {
     if (e.variant == "baseline") baseline[e.family + "/" + e.args] = e.ns_per_iteration;

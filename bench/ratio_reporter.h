@@ -23,6 +23,7 @@ class RatioReporter : public benchmark::ConsoleReporter {
   struct Entry {
     std::string family, variant, args;
     double ns_per_iteration = 0.0;
+    bool median = false;  // the median over repetitions, not a single run
   };
   std::vector<Entry> entries_;
 };

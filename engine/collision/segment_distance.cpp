@@ -1,0 +1,214 @@
+// Paper §3.2, eq. 4: the globally nearest points of two cubic segments. See the header for the
+// method; this file holds the certificate and the branch and bound.
+#include "engine/collision/segment_distance.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <tuple>
+#include <vector>
+
+#include "engine/collision/bezier_bounds.h"
+#include "engine/collision/segment_pair_newton.h"
+
+namespace rugosim {
+namespace {
+
+// Newton steps from the chord seed: enough for the linear convergence of a tangential touch
+// (f grows like the fourth power of the offset there), which is the slowest case that the
+// certificate can close.
+constexpr int kSeedIterations = 40;
+// Inside a rectangle of the search the seed is already close, and the rectangle is split if
+// the descent does not settle.
+constexpr int kCellIterations = 6;
+// Halvings of the parameter intervals: past 2^-48 a rectangle's points agree to rounding.
+constexpr int kMaxDepth = 48;
+// Rectangles examined before giving up with the best pair found (never reached in the tests).
+constexpr int kMaxCells = 4096;
+
+struct Tolerances {
+  double accuracy = 0.0;  // m
+  double zero = 0.0;      // m
+};
+
+double coefficient_sum(const CubicSegment& c) {
+  double sum = 0.0;
+  for (const Vec2& k : c.power())
+    sum += k.cwiseAbs().sum();
+  return sum;
+}
+
+Tolerances tolerances(const CubicSegment& a, const CubicSegment& b) {
+  const double size = std::max(a.hull_bounds().diagonal(), b.hull_bounds().diagonal());
+  const double magnitude = std::max(coefficient_sum(a), coefficient_sum(b));
+  const double accuracy = 1e-12 * size + 64.0 * std::numeric_limits<double>::epsilon() * magnitude;
+  return {accuracy, 4.0 * accuracy};
+}
+
+struct Candidate {
+  double s = 0.0;
+  double t = 0.0;
+  double distance = std::numeric_limits<double>::infinity();
+};
+
+// The slab certificate of the header, step 3, on the rectangle `box`: a lower bound of the
+// distance over it, from the local minimum m found in it.
+double certified_bound(const CubicSegment& a, const CubicSegment& b, const ParameterBox& box,
+                       const LocalMinimum& m) {
+  const Vec2 r = a.point(m.s) - b.point(m.t);
+  const double d = r.norm();
+  if (!(d > 0.0)) return 0.0;
+  return separating_axis_bound(a, b, r / d, box.s0, box.s1, box.t0, box.t1);
+}
+
+struct Cell {
+  double lower = 0.0;   // m, chord lower bound of the distance over the rectangle
+  double chords = 0.0;  // m, distance between the chords: breaks ties among zero bounds
+  ParameterBox box;
+  BezierPolygon pa{};  // sub-polygons of a over [s0, s1] and b over [t0, t1]
+  BezierPolygon pb{};
+  double deviation_a = 0.0;  // m, chord deviations of pa and pb
+  double deviation_b = 0.0;
+  int depth = 0;
+};
+
+// Min-heap on the lower bound, the most promising rectangle first. Near a crossing many
+// rectangles have a zero bound; those whose chords cross (or nearly) hold a root most likely.
+bool farther(const Cell& x, const Cell& y) {
+  if (x.lower != y.lower) return x.lower > y.lower;
+  return x.chords > y.chords;
+}
+
+// Splits a rectangle in two or four. Only the parameter whose piece strays much further from
+// its chord is halved: halving a straight piece tightens no bound, and a concave piece facing
+// a straight one would otherwise breed a long row of rectangles along the straight one.
+void push_children(const Cell& cell, double cutoff, std::vector<Cell>& heap) {
+  const bool split_s = cell.deviation_a >= 0.25 * cell.deviation_b;
+  const bool split_t = cell.deviation_b >= 0.25 * cell.deviation_a;
+  std::array<BezierPolygon, 2> a_part{cell.pa, cell.pa}, b_part{cell.pb, cell.pb};
+  std::array<double, 2> a_dev{cell.deviation_a, cell.deviation_a};
+  std::array<double, 2> b_dev{cell.deviation_b, cell.deviation_b};
+  std::array<double, 3> s_cut{cell.box.s0, cell.box.s1, cell.box.s1};
+  std::array<double, 3> t_cut{cell.box.t0, cell.box.t1, cell.box.t1};
+  if (split_s) {
+    std::tie(a_part[0], a_part[1]) = split_in_half(cell.pa);
+    a_dev = {chord_deviation(a_part[0]), chord_deviation(a_part[1])};
+    s_cut[1] = 0.5 * (cell.box.s0 + cell.box.s1);
+  }
+  if (split_t) {
+    std::tie(b_part[0], b_part[1]) = split_in_half(cell.pb);
+    b_dev = {chord_deviation(b_part[0]), chord_deviation(b_part[1])};
+    t_cut[1] = 0.5 * (cell.box.t0 + cell.box.t1);
+  }
+  for (std::size_t i = 0; i <= (split_s ? 1u : 0u); ++i) {
+    for (std::size_t j = 0; j <= (split_t ? 1u : 0u); ++j) {
+      Cell child;
+      child.pa = a_part[i];
+      child.pb = b_part[j];
+      child.deviation_a = a_dev[i];
+      child.deviation_b = b_dev[j];
+      child.chords = closest_on_chords(child.pa[0], child.pa[3], child.pb[0], child.pb[3]).distance;
+      child.lower = std::max(0.0, child.chords - a_dev[i] - b_dev[j]);
+      if (child.lower >= cutoff) continue;
+      child.box = {s_cut[i], s_cut[i + 1], t_cut[j], t_cut[j + 1]};
+      child.depth = cell.depth + 1;
+      heap.push_back(child);
+      std::push_heap(heap.begin(), heap.end(), farther);
+    }
+  }
+}
+
+// Step 4 of the header: best-first search from `best`, which the certificate could not close.
+Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const Tolerances& tol,
+                           Candidate best) {
+  std::vector<Cell> heap;
+  heap.reserve(64);
+  Cell root;
+  root.pa = a.bezier();
+  root.pb = b.bezier();
+  root.deviation_a = chord_deviation(root.pa);
+  root.deviation_b = chord_deviation(root.pb);
+  push_children(root, best.distance - tol.accuracy, heap);
+  for (int examined = 0; !heap.empty() && examined < kMaxCells; ++examined) {
+    std::pop_heap(heap.begin(), heap.end(), farther);
+    const Cell cell = heap.back();
+    heap.pop_back();
+    if (cell.lower >= best.distance - tol.accuracy) break;  // so are all the others
+    const ChordPair seed = closest_on_chords(cell.pa[0], cell.pa[3], cell.pb[0], cell.pb[3]);
+    const ParameterBox& box = cell.box;
+    const double s = box.s0 + seed.u * (box.s1 - box.s0);
+    const double t = box.t0 + seed.v * (box.t1 - box.t0);
+    // On small rectangles the chords' nearest points are already close to the rectangle's
+    // minimum: try the certificate there before paying for a descent.
+    const LocalMinimum at_seed{s, t, (a.point(s) - b.point(t)).squaredNorm()};
+    const double d_seed = std::sqrt(at_seed.distance2);
+    if (d_seed < best.distance) best = {s, t, d_seed};
+    if (best.distance <= tol.zero) break;
+    if (certified_bound(a, b, box, at_seed) >= best.distance - tol.accuracy) continue;
+    const LocalMinimum m =
+        descend_to_local_minimum(a, b, box, s, t, tol.zero * tol.zero, kCellIterations);
+    const double d = std::sqrt(m.distance2);
+    if (d < best.distance) {
+      // A new best: follow it out of the rectangle to its own minimum (or a crossing), so that
+      // later rectangles are judged against the best value this basin can give.
+      const LocalMinimum polished = descend_to_local_minimum(a, b, ParameterBox{}, m.s, m.t,
+                                                             tol.zero * tol.zero, kSeedIterations);
+      best = {m.s, m.t, d};
+      const double d_polished = std::sqrt(polished.distance2);
+      if (d_polished < d) best = {polished.s, polished.t, d_polished};
+    }
+    if (best.distance <= tol.zero) break;
+    if (certified_bound(a, b, box, m) >= best.distance - tol.accuracy) continue;
+    if (cell.depth < kMaxDepth) push_children(cell, best.distance - tol.accuracy, heap);
+  }
+  return best;
+}
+
+}  // namespace
+
+double nearest_points_accuracy(const CubicSegment& a, const CubicSegment& b) {
+  return tolerances(a, b).accuracy;
+}
+
+double crossing_distance(const CubicSegment& a, const CubicSegment& b) {
+  return tolerances(a, b).zero;
+}
+
+NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b) {
+  const Tolerances tol = tolerances(a, b);
+  const auto& pa = a.bezier();
+  const auto& pb = b.bezier();
+  const ParameterBox unit;
+  const auto settled = [&](const LocalMinimum& m) {
+    const double d = std::sqrt(m.distance2);
+    return d <= tol.zero || certified_bound(a, b, unit, m) >= d - tol.accuracy;
+  };
+  const ChordPair seed = closest_on_chords(pa[0], pa[3], pb[0], pb[3]);
+  LocalMinimum m =
+      descend_to_local_minimum(a, b, unit, seed.u, seed.v, tol.zero * tol.zero, kSeedIterations);
+  bool done = settled(m);
+  if (!done) {
+    // Second chance before the search: nearly parallel pieces (resting contact) whose first
+    // descent ran to an end.
+    if (const auto middle = middle_of_chord_overlap(pa[0], pa[3], pb[0], pb[3])) {
+      const LocalMinimum m2 = descend_to_local_minimum(a, b, unit, middle->u, middle->v,
+                                                       tol.zero * tol.zero, kSeedIterations);
+      if (m2.distance2 < m.distance2) {
+        m = m2;
+        done = settled(m);
+      }
+    }
+  }
+  Candidate best{m.s, m.t, std::sqrt(m.distance2)};
+  if (!done) best = branch_and_bound(a, b, tol, best);
+  NearestPoints out;
+  out.t_a = best.s;
+  out.t_b = best.t;
+  out.point_a = a.point(best.s);
+  out.point_b = b.point(best.t);
+  out.distance = (out.point_a - out.point_b).norm();
+  return out;
+}
+
+}  // namespace rugosim
