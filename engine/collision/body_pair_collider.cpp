@@ -1,0 +1,140 @@
+#include "engine/collision/body_pair_collider.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/collision/segment_crossing.h"
+#include "engine/collision/segment_distance.h"
+
+namespace rugosim {
+
+namespace {
+
+// Whether segments i and j of a closed curve with n segments are the same or neighbours.
+bool same_or_adjacent(std::size_t i, std::size_t j, std::size_t n) {
+  return i == j || (i + 1) % n == j || (j + 1) % n == i;
+}
+
+// Whether segment `across` is the neighbour that joint end `t` (0 or 1) of segment `own` leads
+// to; false when t is inside the segment.
+bool across_joint(std::size_t own, double t, std::size_t across, std::size_t n) {
+  if (t <= 0.0) return across == (own + n - 1) % n;
+  if (t >= 1.0) return across == (own + 1) % n;
+  return false;
+}
+
+bool duplicates(const Contact& c, const Contact& kept, std::size_t na, std::size_t nb) {
+  if (!same_or_adjacent(c.segment_a, kept.segment_a, na) ||
+      !same_or_adjacent(c.segment_b, kept.segment_b, nb)) {
+    return false;
+  }
+  // The same place, within the contact band (or rounding, when there is no band).
+  const double radius = std::max(c.lambda_a + c.lambda_b, kept.lambda_a + kept.lambda_b) +
+                        1e-12 * (1.0 + c.point.norm());
+  if ((c.point_a - kept.point_a).norm() <= radius && (c.point_b - kept.point_b).norm() <= radius) {
+    return true;
+  }
+  // A minimum at a segment's end whose neighbour across that joint found a closer pair is not a
+  // minimum of the whole curve: the distance keeps falling past the joint.
+  return across_joint(c.segment_a, c.t_a, kept.segment_a, na) ||
+         across_joint(c.segment_b, c.t_b, kept.segment_b, nb);
+}
+
+}  // namespace
+
+Vec2 outward_normal(const CubicSegment& segment, double t) {
+  const auto& a = segment.power();
+  const double scale = a[1].norm() + a[2].norm() + a[3].norm();
+  const double negligible = 1e-12 * scale;
+  Vec2 direction = segment.derivative(t);
+  if (direction.norm() <= negligible) {
+    // f'(t0) = 0: just after t0 the curve moves along f''(t0), just before along −f''(t0).
+    direction = t < 0.5 ? segment.second_derivative(t) : Vec2(-segment.second_derivative(t));
+    if (direction.norm() <= negligible) direction = segment.third_derivative();
+  }
+  const double length = direction.norm();
+  if (!(length > negligible) || !(length > 0.0)) return Vec2::Zero();
+  // Counter-clockwise travel: the outside is on the right.
+  return Vec2(direction.y(), -direction.x()) / length;
+}
+
+void merge_duplicate_contacts(std::vector<Contact>& contacts, std::size_t segments_a,
+                              std::size_t segments_b) {
+  auto closer_first = [](const Contact& p, const Contact& q) {
+    if (p.distance != q.distance) return p.distance < q.distance;
+    if (p.segment_a != q.segment_a) return p.segment_a < q.segment_a;
+    if (p.segment_b != q.segment_b) return p.segment_b < q.segment_b;
+    return p.t_a < q.t_a || (p.t_a == q.t_a && p.t_b < q.t_b);
+  };
+  std::sort(contacts.begin(), contacts.end(), closer_first);
+  std::vector<Contact> kept;
+  kept.reserve(contacts.size());
+  for (const Contact& c : contacts) {
+    const bool seen = std::any_of(kept.begin(), kept.end(), [&](const Contact& k) {
+      return duplicates(c, k, segments_a, segments_b);
+    });
+    if (!seen) kept.push_back(c);
+  }
+  std::sort(kept.begin(), kept.end(), [](const Contact& p, const Contact& q) {
+    if (p.segment_a != q.segment_a) return p.segment_a < q.segment_a;
+    if (p.t_a != q.t_a) return p.t_a < q.t_a;
+    if (p.segment_b != q.segment_b) return p.segment_b < q.segment_b;
+    return p.t_b < q.t_b;
+  });
+  contacts = std::move(kept);
+}
+
+void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_a,
+                               const CollisionShape& b, const Transform2& place_b,
+                               ContactManifold& out) {
+  out.intersections.clear();
+  out.contacts.clear();
+  candidates_.clear();
+  leaf_pairs_.clear();
+
+  // Work in A's frame: A's segments are used as stored, only B's are moved.
+  const Transform2 b_to_a = place_a.inverse() * place_b;
+  a.tree().query(b.tree(), b_to_a, leaf_pairs_);
+
+  for (const LeafPair& pair : leaf_pairs_) {
+    const CubicSegment& seg_a = a.curve().segment(pair.segment_a);
+    const CubicSegment seg_b = b.curve().segment(pair.segment_b).transformed(b_to_a);
+    const NearestPoints near = nearest_points(seg_a, seg_b);
+    if (near.distance <= crossing_distance(seg_a, seg_b)) {
+      if (const auto crossing = find_crossing(seg_a, seg_b)) {
+        out.intersections.push_back({pair.segment_a, pair.segment_b, crossing->t_a, crossing->t_b,
+                                     place_a.apply(crossing->point)});
+        continue;
+      }
+    }
+    const double lambda_a = a.tolerances().at(pair.segment_a, near.t_a);
+    const double lambda_b = b.tolerances().at(pair.segment_b, near.t_b);
+    if (near.distance > lambda_a + lambda_b) continue;  // separated
+
+    Contact c;
+    c.segment_a = pair.segment_a;
+    c.segment_b = pair.segment_b;
+    c.t_a = near.t_a;
+    c.t_b = near.t_b;
+    c.lambda_a = lambda_a;
+    c.lambda_b = lambda_b;
+    c.point_a = place_a.apply(near.point_a);
+    c.point_b = place_a.apply(near.point_b);
+    c.distance = near.distance;
+    // The paper's contact point, corrected: the midpoint of the nearest points (DESIGN.md).
+    const Vec2 d = c.point_a - c.point_b;
+    c.point = c.point_b + 0.5 * d;
+    // At nearest points d is normal to B wherever B is smooth, and it points from B to A by
+    // construction; only when the curves touch (d ~ 0) does B's own normal decide.
+    const double negligible = 1e-12 * (1.0 + c.point.norm());
+    Vec2 normal = d.norm() > negligible ? Vec2(d / d.norm())
+                                        : Vec2(place_a.rotate(outward_normal(seg_b, near.t_b)));
+    if (!(normal.norm() > 0.5)) normal = Vec2::UnitY();  // a segment shrunk to a point
+    c.normal = normal;
+    candidates_.push_back(c);
+  }
+  merge_duplicate_contacts(candidates_, a.curve().size(), b.curve().size());
+  out.contacts = candidates_;
+}
+
+}  // namespace rugosim

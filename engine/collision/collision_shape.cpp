@@ -1,0 +1,36 @@
+#include "engine/collision/collision_shape.h"
+
+#include <stdexcept>
+#include <string>
+
+#include "engine/geometry/orientation.h"
+
+namespace rugosim {
+
+namespace {
+ToleranceProfile checked(const PeriodicBSpline& curve, ToleranceProfile tolerances) {
+  if (tolerances.size() != curve.size()) {
+    throw std::invalid_argument("the tolerance profile has " + std::to_string(tolerances.size()) +
+                                " segments but the curve has " + std::to_string(curve.size()));
+  }
+  // Outward normals (contacts point from B to A) rely on counter-clockwise travel.
+  if (!is_counter_clockwise(curve)) {
+    throw std::invalid_argument("a collision shape's curve must run counter-clockwise");
+  }
+  return tolerances;
+}
+}  // namespace
+
+CollisionShape::CollisionShape(PeriodicBSpline curve, ToleranceProfile tolerances)
+    : curve_(std::move(curve)),
+      tolerances_(checked(curve_, std::move(tolerances))),
+      tree_(curve_, tolerances_) {}
+
+Aabb CollisionShape::world_bounds(const Transform2& placement) const {
+  Aabb box;
+  for (const Vec2& corner : tree_.root().box.transformed(placement).corners())
+    box.extend(corner);
+  return box;
+}
+
+}  // namespace rugosim

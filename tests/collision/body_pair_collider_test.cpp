@@ -1,0 +1,224 @@
+#include "engine/collision/body_pair_collider.h"
+
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "engine/collision/collision_pipeline.h"
+#include "engine/core/random.h"
+#include "engine/geometry/orientation.h"
+#include "engine/geometry/shapes.h"
+
+namespace rugosim {
+namespace {
+
+CollisionShape make_shape(const std::vector<Vec2>& points, double sigma, double q = 0.9) {
+  const Reversal ccw = make_counter_clockwise(points);
+  return CollisionShape(PeriodicBSpline(ccw.control_points),
+                        ToleranceProfile::from_sigma(std::vector<double>(points.size(), sigma), q));
+}
+
+// Floor: a 4 m x 0.4 m box whose top face is y = 0. Disk: radius 0.5 with 64 segments.
+const CollisionShape& floor_shape() {
+  static const CollisionShape shape = make_shape(box_control_points(4.0, 0.4, 48), 0.001 / 0.9);
+  return shape;
+}
+const Transform2 kFloorPlace(0.0, Vec2(0.0, -0.2));
+
+const CollisionShape& disk_shape() {
+  static const CollisionShape shape = make_shape(circle_control_points(0.5, 64), 0.001 / 0.9);
+  return shape;
+}
+
+TEST(BodyPairCollider, DiskWithinTheBandTouchesOnceWithTheFloorNormal) {
+  // λ = 0.001 on both: the band is 0.002. The disk's lowest point is a knot (exactly radius
+  // 0.5 below its centre) at angle −π/2, so a gap of 0.0015 is a tolerated contact.
+  BodyPairCollider collider;
+  ContactManifold m;
+  for (double x : {-1.0, 0.0, 0.37}) {
+    const Transform2 disk_place(0.0, Vec2(x, 0.5 + 0.0015));
+    collider.collide(disk_shape(), disk_place, floor_shape(), kFloorPlace, m);
+    ASSERT_EQ(m.state(), PairState::kContact) << x;
+    ASSERT_EQ(m.contacts.size(), 1u) << "duplicates around the joint must be merged, x " << x;
+    const Contact& c = m.contacts.front();
+    EXPECT_NEAR(c.distance, 0.0015, 1e-9);
+    EXPECT_NEAR(c.point.x(), x, 1e-6);
+    EXPECT_NEAR(c.point.y(), 0.00075, 1e-9);  // midpoint of the nearest points
+    EXPECT_NEAR(c.normal.x(), 0.0, 1e-9);
+    EXPECT_NEAR(c.normal.y(), 1.0, 1e-12);  // normal of B (the floor) towards A (the disk)
+    EXPECT_NEAR(c.lambda_a, 0.001, 1e-15);
+    EXPECT_NEAR(c.lambda_b, 0.001, 1e-15);
+    EXPECT_NEAR((c.point_a - c.point_b).norm(), c.distance, 1e-15);
+  }
+}
+
+TEST(BodyPairCollider, NormalAlwaysPointsFromBTowardsA) {
+  BodyPairCollider collider;
+  ContactManifold m;
+  const Transform2 disk_place(0.0, Vec2(0.2, 0.5 + 0.001));
+  collider.collide(floor_shape(), kFloorPlace, disk_shape(), disk_place, m);
+  ASSERT_EQ(m.state(), PairState::kContact);
+  for (const Contact& c : m.contacts)
+    EXPECT_NEAR(c.normal.y(), -1.0, 1e-9);  // disk -> floor
+}
+
+TEST(BodyPairCollider, BeyondTheBandIsSeparated) {
+  BodyPairCollider collider;
+  ContactManifold m;
+  collider.collide(disk_shape(), Transform2(0.3, Vec2(0.0, 0.5 + 0.0021)), floor_shape(),
+                   kFloorPlace, m);
+  EXPECT_EQ(m.state(), PairState::kSeparated);
+  EXPECT_TRUE(m.contacts.empty());
+  EXPECT_TRUE(m.intersections.empty());
+}
+
+TEST(BodyPairCollider, SunkenDiskIntersectsWhereTheCirclesCrossTheFace) {
+  BodyPairCollider collider;
+  ContactManifold m;
+  const double sink = 0.01;
+  collider.collide(disk_shape(), Transform2(0.0, Vec2(0.0, 0.5 - sink)), floor_shape(), kFloorPlace,
+                   m);
+  ASSERT_EQ(m.state(), PairState::kIntersecting);
+  const double half_chord = std::sqrt(0.25 - (0.5 - sink) * (0.5 - sink));
+  bool left = false, right = false;
+  for (const Intersection& x : m.intersections) {
+    EXPECT_NEAR(x.point.y(), 0.0, 1e-9);
+    left |= std::abs(x.point.x() + half_chord) < 1e-5;
+    right |= std::abs(x.point.x() - half_chord) < 1e-5;
+  }
+  EXPECT_TRUE(left);
+  EXPECT_TRUE(right);
+}
+
+TEST(BodyPairCollider, FlatBoxOnFlatFloorGivesSeveralDistinctContacts) {
+  const CollisionShape block = make_shape(box_control_points(0.6, 0.2, 32), 0.001 / 0.9);
+  BodyPairCollider collider;
+  ContactManifold m;
+  collider.collide(block, Transform2(0.0, Vec2(0.1, 0.1 + 0.0005)), floor_shape(), kFloorPlace, m);
+  ASSERT_EQ(m.state(), PairState::kContact);
+  ASSERT_GE(m.contacts.size(), 2u);
+  double lo = 1e9, hi = -1e9;
+  for (const Contact& c : m.contacts) {
+    EXPECT_NEAR(c.distance, 0.0005, 1e-12);
+    EXPECT_NEAR(c.normal.y(), 1.0, 1e-12);
+    EXPECT_NEAR(c.point.y(), 0.00025, 1e-12);
+    lo = std::min(lo, c.point.x());
+    hi = std::max(hi, c.point.x());
+  }
+  // The contacts span the block's bottom face, corners included.
+  EXPECT_NEAR(lo, 0.1 - 0.3, 1e-9);
+  EXPECT_NEAR(hi, 0.1 + 0.3, 1e-9);
+  for (std::size_t i = 0; i < m.contacts.size(); ++i) {
+    for (std::size_t j = i + 1; j < m.contacts.size(); ++j) {
+      EXPECT_GT((m.contacts[i].point - m.contacts[j].point).norm(), 0.002) << i << " " << j;
+    }
+  }
+}
+
+// All pairs (segment of A, segment of B) that cross, by a dense polyline test.
+std::set<std::pair<std::size_t, std::size_t>> brute_force_crossings(const CollisionShape& a,
+                                                                    const Transform2& pa,
+                                                                    const CollisionShape& b,
+                                                                    const Transform2& pb) {
+  const int k = 64;
+  auto polyline = [&](const CollisionShape& s, const Transform2& p, std::size_t j) {
+    std::vector<Vec2> out;
+    for (int i = 0; i <= k; ++i)
+      out.push_back(p.apply(s.curve().point(j, static_cast<double>(i) / k)));
+    return out;
+  };
+  auto crosses = [](const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s) {
+    const double d1 = cross(q - p, r - p), d2 = cross(q - p, s - p);
+    const double d3 = cross(s - r, p - r), d4 = cross(s - r, q - r);
+    return d1 * d2 < 0 && d3 * d4 < 0;  // proper crossings only: robust verdicts
+  };
+  std::set<std::pair<std::size_t, std::size_t>> out;
+  for (std::size_t i = 0; i < a.curve().size(); ++i) {
+    const auto la = polyline(a, pa, i);
+    for (std::size_t j = 0; j < b.curve().size(); ++j) {
+      const auto lb = polyline(b, pb, j);
+      for (int u = 0; u < k && !out.count({i, j}); ++u) {
+        for (int v = 0; v < k; ++v) {
+          if (crosses(la[static_cast<std::size_t>(u)], la[static_cast<std::size_t>(u) + 1],
+                      lb[static_cast<std::size_t>(v)], lb[static_cast<std::size_t>(v) + 1])) {
+            out.insert({i, j});
+            break;
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+
+TEST(BodyPairCollider, EveryCrossingSegmentPairIsReported) {
+  Rng rng(61);
+  BodyPairCollider collider;
+  ContactManifold m;
+  std::size_t crossings = 0;
+  for (int c = 0; c < 20; ++c) {
+    const CollisionShape a = make_shape(
+        blob_control_points(1.0, rng.uniform(0.0, 0.7),
+                            16 + static_cast<std::size_t>(rng.uniform(0, 24)), rng.next_u64()),
+        0.002);
+    const CollisionShape b = make_shape(
+        blob_control_points(0.7, rng.uniform(0.0, 0.7),
+                            12 + static_cast<std::size_t>(rng.uniform(0, 24)), rng.next_u64()),
+        0.003);
+    const Transform2 pa(rng.uniform(-3, 3), Vec2(0, 0));
+    const Transform2 pb(rng.uniform(-3, 3), Vec2(rng.uniform(0.8, 1.4), rng.uniform(-0.5, 0.5)));
+    collider.collide(a, pa, b, pb, m);
+    std::set<std::pair<std::size_t, std::size_t>> found;
+    for (const Intersection& x : m.intersections)
+      found.insert({x.segment_a, x.segment_b});
+    for (const auto& pair : brute_force_crossings(a, pa, b, pb)) {
+      ++crossings;
+      EXPECT_TRUE(found.count(pair)) << "case " << c << ": segments " << pair.first << ", "
+                                     << pair.second << " cross but were not reported";
+    }
+  }
+  EXPECT_GE(crossings, 40u);  // the layouts do overlap
+}
+
+TEST(CollisionPipeline, FindsEveryTouchingPairOnceAndSkipsFixedPairs) {
+  // Two fixed floors side by side touching each other, a disk resting across the joint region
+  // and a far-away disk.
+  std::vector<PlacedShape> bodies = {
+      {&floor_shape(), Transform2(0.0, Vec2(-2.0, -0.2)), true, false},
+      {&floor_shape(), Transform2(0.0, Vec2(2.0 + 0.0005, -0.2)), true, false},
+      {&disk_shape(), Transform2(0.0, Vec2(-1.0, 0.5 + 0.001)), false, false},
+      {&disk_shape(), Transform2(0.0, Vec2(1.0, 3.0)), false, false},
+  };
+  CollisionPipeline pipeline;
+  const auto& manifolds = pipeline.detect(bodies);
+  ASSERT_EQ(manifolds.size(), 1u);  // floors touch each other but are both fixed
+  EXPECT_EQ(manifolds[0].body_a, 0u);
+  EXPECT_EQ(manifolds[0].body_b, 2u);
+  EXPECT_EQ(manifolds[0].state(), PairState::kContact);
+  EXPECT_EQ(pipeline.counts().contacts, 1u);
+  EXPECT_GE(pipeline.counts().leaf_pairs, 1u);
+}
+
+TEST(OutwardNormal, PointsOutOfACircleAndOffASharpCorner) {
+  const PeriodicBSpline circle(circle_control_points(1.0, 16));
+  for (std::size_t j = 0; j < 16; ++j) {
+    const Vec2 n = outward_normal(circle.segment(j), 0.3);
+    EXPECT_NEAR(n.norm(), 1.0, 1e-12);
+    EXPECT_GT(n.dot(circle.point(j, 0.3).normalized()), 0.99);
+  }
+  // A sharp box: the first segment starts at the bottom-left corner with zero tangent and runs
+  // along the bottom edge, whose outward normal is −y.
+  const PeriodicBSpline box(box_control_points(2.0, 1.0, 16));
+  const CubicSegment& s = box.segment(1);  // uses the triple corner point c_0, c_1, c_2
+  ASSERT_LE(s.derivative(0.0).norm(), 1e-15);
+  const Vec2 n = outward_normal(s, 0.0);
+  EXPECT_NEAR(n.x(), 0.0, 1e-12);
+  EXPECT_NEAR(n.y(), -1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace rugosim
