@@ -148,17 +148,23 @@ TEST(Obb, CornersAreCounterClockwiseAndSpanTheArea) {
   EXPECT_TRUE(box.contains(box.center));
 }
 
+// A box at a random place and angle, with half extents up to 2 (either may be 0).
+Obb random_box(Rng& rng) {
+  Obb box;
+  const double angle = rng.uniform(-kPi, kPi);
+  box.center = Vec2(rng.uniform(-3, 3), rng.uniform(-3, 3));
+  box.axis_x = Vec2(std::cos(angle), std::sin(angle));
+  box.axis_y = perp(box.axis_x);
+  box.half_extents = Vec2(rng.uniform(0, 2), rng.uniform(0, 2));
+  return box;
+}
+
 // The fattened box holds every point within `margin` of the original box, and no more along
 // its axes.
 TEST(Obb, FattenedHoldsTheMarginNeighbourhood) {
   Rng rng(4);
   for (int c = 0; c < 200; ++c) {
-    Obb box;
-    const double angle = rng.uniform(-kPi, kPi);
-    box.center = Vec2(rng.uniform(-3, 3), rng.uniform(-3, 3));
-    box.axis_x = Vec2(std::cos(angle), std::sin(angle));
-    box.axis_y = perp(box.axis_x);
-    box.half_extents = Vec2(rng.uniform(0, 2), rng.uniform(0, 2));
+    const Obb box = random_box(rng);
     const double margin = rng.uniform(0.0, 0.5);
     const Obb fat = box.fattened(margin);
     EXPECT_EQ(fat.center, box.center);
@@ -176,12 +182,7 @@ TEST(Obb, FattenedHoldsTheMarginNeighbourhood) {
 TEST(Obb, TransformedPlacesTheBoxRigidly) {
   Rng rng(5);
   for (int c = 0; c < 200; ++c) {
-    Obb box;
-    const double angle = rng.uniform(-kPi, kPi);
-    box.center = Vec2(rng.uniform(-3, 3), rng.uniform(-3, 3));
-    box.axis_x = Vec2(std::cos(angle), std::sin(angle));
-    box.axis_y = perp(box.axis_x);
-    box.half_extents = Vec2(rng.uniform(0, 2), rng.uniform(0, 2));
+    const Obb box = random_box(rng);
     const Transform2 x(rng.uniform(-kPi, kPi), Vec2(rng.uniform(-9, 9), rng.uniform(-9, 9)));
     const Obb placed = box.transformed(x);
     EXPECT_EQ(placed.half_extents, box.half_extents);
