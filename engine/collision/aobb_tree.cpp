@@ -91,7 +91,7 @@ namespace {
 
 // Leaves in segment order, then each level's parents, bottom-up; returns the root's index.
 std::uint32_t build_bottom_up(const PeriodicBSpline& curve, const ToleranceProfile& tolerances,
-                              std::vector<BuildNode>& build) {
+                              double min_margin, std::vector<BuildNode>& build) {
   const std::size_t n = curve.size();
   build.reserve(2 * n);
   std::vector<std::uint32_t> level;
@@ -102,7 +102,7 @@ std::uint32_t build_bottom_up(const PeriodicBSpline& curve, const ToleranceProfi
     // box contain the whole segment, not just the samples.
     const Obb fitted = bound_along(segment.bezier(), segment_axis(segment));
     BuildNode leaf;
-    leaf.box = padded(fitted.fattened(tolerances.segment_range(j).hi));
+    leaf.box = padded(fitted.fattened(std::max(tolerances.segment_range(j).hi, min_margin)));
     leaf.segment = static_cast<std::uint32_t>(j);
     level.push_back(static_cast<std::uint32_t>(build.size()));
     build.push_back(leaf);
@@ -142,14 +142,15 @@ std::uint32_t build_bottom_up(const PeriodicBSpline& curve, const ToleranceProfi
 
 }  // namespace
 
-AobbTree::AobbTree(const PeriodicBSpline& curve, const ToleranceProfile& tolerances) {
+AobbTree::AobbTree(const PeriodicBSpline& curve, const ToleranceProfile& tolerances,
+                   double min_margin) {
   const std::size_t n = curve.size();
   if (tolerances.size() != n) {
     throw std::invalid_argument("AobbTree: " + std::to_string(tolerances.size()) +
                                 " tolerances for " + std::to_string(n) + " segments");
   }
   std::vector<BuildNode> build;
-  const std::uint32_t root = build_bottom_up(curve, tolerances, build);
+  const std::uint32_t root = build_bottom_up(curve, tolerances, min_margin, build);
 
   // Lay the nodes out depth-first (first child next to its parent) for the query's descent.
   struct Pending {

@@ -60,7 +60,9 @@ class AobbTree {
   };
 
   // Throws std::invalid_argument when the profile's size differs from the curve's.
-  AobbTree(const PeriodicBSpline& curve, const ToleranceProfile& tolerances);
+  // Leaves are fattened by the segment's largest tolerance, and at least by min_margin (m).
+  AobbTree(const PeriodicBSpline& curve, const ToleranceProfile& tolerances,
+           double min_margin = 0.0);
 
   std::size_t segment_count() const { return leaf_node_.size(); }
   std::size_t node_count() const { return nodes_.size(); }

@@ -15,29 +15,33 @@ bool same_or_adjacent(std::size_t i, std::size_t j, std::size_t n) {
   return i == j || (i + 1) % n == j || (j + 1) % n == i;
 }
 
-// Whether segment `across` is the neighbour that joint end `t` (0 or 1) of segment `own` leads
-// to; false when t is inside the segment.
-bool across_joint(std::size_t own, double t, std::size_t across, std::size_t n) {
-  if (t <= 0.0) return across == (own + n - 1) % n;
-  if (t >= 1.0) return across == (own + 1) % n;
-  return false;
-}
-
 bool duplicates(const Contact& c, const Contact& kept, std::size_t na, std::size_t nb) {
   if (!same_or_adjacent(c.segment_a, kept.segment_a, na) ||
       !same_or_adjacent(c.segment_b, kept.segment_b, nb)) {
     return false;
   }
-  // The same place, within the contact band (or rounding, when there is no band).
+  // The same place, within the contact band (or rounding, when there is no band): around a
+  // joint both neighbouring leaf pairs find it.
   const double radius = std::max(c.lambda_a + c.lambda_b, kept.lambda_a + kept.lambda_b) +
                         1e-12 * (1.0 + c.point.norm());
-  if ((c.point_a - kept.point_a).norm() <= radius && (c.point_b - kept.point_b).norm() <= radius) {
-    return true;
-  }
-  // A minimum at a segment's end whose neighbour across that joint found a closer pair is not a
-  // minimum of the whole curve: the distance keeps falling past the joint.
-  return across_joint(c.segment_a, c.t_a, kept.segment_a, na) ||
-         across_joint(c.segment_b, c.t_b, kept.segment_b, nb);
+  return (c.point_a - kept.point_a).norm() <= radius && (c.point_b - kept.point_b).norm() <= radius;
+}
+
+// Whether a minimum that a leaf pair found at an end of its segment (t = 0 or 1) is only the
+// edge of that pair's parameter square and not a minimum of the whole curves: the distance
+// still falls when the parameter moves on across the joint. The neighbouring pair, which is
+// even closer and so inside the band too, reports the real minimum. d(½‖a − b‖²)/dt_a = d·a'
+// and d(½‖a − b‖²)/dt_b = −d·b', with d = a − b; all in the frame the segments are given in.
+bool falls_past_a_joint(const CubicSegment& seg_a, double t_a, const CubicSegment& seg_b,
+                        double t_b, const Vec2& d) {
+  auto falls = [&](const Vec2& derivative, double t, double sign) {
+    if (t > 0.0 && t < 1.0) return false;
+    const double slope = sign * d.dot(derivative);  // rate of change of ½‖d‖² as t grows
+    const double margin = 1e-9 * d.norm() * derivative.norm();
+    // At t = 1 the curve continues for growing t, at t = 0 for shrinking t.
+    return t >= 1.0 ? slope < -margin : slope > margin;
+  };
+  return falls(seg_a.derivative(t_a), t_a, 1.0) || falls(seg_b.derivative(t_b), t_b, -1.0);
 }
 
 }  // namespace
@@ -109,7 +113,11 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     }
     const double lambda_a = a.tolerances().at(pair.segment_a, near.t_a);
     const double lambda_b = b.tolerances().at(pair.segment_b, near.t_b);
-    if (near.distance > lambda_a + lambda_b) continue;  // separated
+    const double band = std::max(lambda_a + lambda_b, a.min_band() + b.min_band());
+    if (near.distance > band) continue;  // separated
+    if (falls_past_a_joint(seg_a, near.t_a, seg_b, near.t_b, near.point_a - near.point_b)) {
+      continue;  // the neighbouring pair holds the real minimum
+    }
 
     Contact c;
     c.segment_a = pair.segment_a;

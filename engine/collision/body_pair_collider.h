@@ -33,10 +33,11 @@ class BodyPairCollider {
 // points) the first non-zero higher derivative gives the direction of travel instead.
 Vec2 outward_normal(const CubicSegment& segment, double t);
 
-// Merges contacts that describe the same place: the nearest points of neighbouring leaf pairs
-// around a shared joint (or closer together than the combined tolerance band, on the same or
-// adjacent segments of both bodies). Keeps the closest of each group; the order of the result
-// is deterministic (by segment and parameter).
+// Merges contacts that describe the same place: nearest points of neighbouring leaf pairs
+// (same or adjacent segments on both bodies) closer together than the combined tolerance band,
+// as around a shared joint. Keeps the closest of each group; the order of the result is
+// deterministic (by segment and parameter). (Minima at a segment's end that are not minima of
+// the whole curves are dropped before, in collide().)
 void merge_duplicate_contacts(std::vector<Contact>& contacts, std::size_t segments_a,
                               std::size_t segments_b);
 

@@ -24,7 +24,8 @@ ToleranceProfile checked(const PeriodicBSpline& curve, ToleranceProfile toleranc
 CollisionShape::CollisionShape(PeriodicBSpline curve, ToleranceProfile tolerances)
     : curve_(std::move(curve)),
       tolerances_(checked(curve_, std::move(tolerances))),
-      tree_(curve_, tolerances_) {}
+      min_band_(kMinContactBandRelative * curve_.hull_bounds().diagonal()),
+      tree_(curve_, tolerances_, min_band_) {}
 
 Aabb CollisionShape::world_bounds(const Transform2& placement) const {
   Aabb box;

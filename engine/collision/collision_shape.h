@@ -11,6 +11,10 @@
 
 namespace rugosim {
 
+// Smallest contact band a body brings, relative to its size: with σ = 0 (no band at all) two
+// bodies could only ever cross or be apart, and a step could never end in contact.
+inline constexpr double kMinContactBandRelative = 1e-6;
+
 class CollisionShape {
  public:
   // Throws std::invalid_argument when the profile's size differs from the segment count or the
@@ -20,6 +24,9 @@ class CollisionShape {
   const PeriodicBSpline& curve() const { return curve_; }
   const ToleranceProfile& tolerances() const { return tolerances_; }
   const AobbTree& tree() const { return tree_; }
+  // m: kMinContactBandRelative times the curve's size. A pair is in contact when its distance
+  // is within max(λ_a(t_a) + λ_b(t_b), min_band_a + min_band_b); the leaf boxes hold it too.
+  double min_band() const { return min_band_; }
 
   // World box around the placed body and its tolerance band, for the broad phase.
   Aabb world_bounds(const Transform2& placement) const;
@@ -27,6 +34,7 @@ class CollisionShape {
  private:
   PeriodicBSpline curve_;
   ToleranceProfile tolerances_;
+  double min_band_ = 0.0;
   AobbTree tree_;
 };
 

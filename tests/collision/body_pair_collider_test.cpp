@@ -1,5 +1,6 @@
 #include "engine/collision/body_pair_collider.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -218,6 +219,84 @@ TEST(OutwardNormal, PointsOutOfACircleAndOffASharpCorner) {
   const Vec2 n = outward_normal(s, 0.0);
   EXPECT_NEAR(n.x(), 0.0, 1e-12);
   EXPECT_NEAR(n.y(), -1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace rugosim
+
+namespace rugosim {
+namespace {
+
+TEST(BodyPairCollider, BoxOnFloorKeepsBothCornersWhereverItStands) {
+  // Flat on flat: every leaf pair's nearest points sit at segment ends, and equal distances
+  // make the order of candidates a matter of rounding. Both corners of the block must survive,
+  // wherever it stands.
+  const CollisionShape block = make_shape(box_control_points(0.6, 0.2, 32), 0.001 / 0.9);
+  BodyPairCollider collider;
+  ContactManifold m;
+  for (int k = 0; k < 50; ++k) {
+    const double x = -1.0 + 0.0371 * k;
+    const double tilt = (k % 3 - 1) * 1e-9;
+    collider.collide(block, Transform2(tilt, Vec2(x, 0.1 + 0.0005)), floor_shape(), kFloorPlace, m);
+    ASSERT_EQ(m.state(), PairState::kContact) << k;
+    double lo = 1e9, hi = -1e9;
+    for (const Contact& c : m.contacts) {
+      lo = std::min(lo, c.point.x());
+      hi = std::max(hi, c.point.x());
+    }
+    EXPECT_NEAR(lo, x - 0.3, 1e-6) << k;
+    EXPECT_NEAR(hi, x + 0.3, 1e-6) << k;
+    // Every kept contact lies under the block's bottom face, in the band.
+    for (const Contact& c : m.contacts) {
+      EXPECT_GE(c.point.x(), x - 0.3 - 1e-6);
+      EXPECT_LE(c.point.x(), x + 0.3 + 1e-6);
+      EXPECT_NEAR(c.distance, 0.0005, 1e-6);
+    }
+  }
+}
+
+TEST(BodyPairCollider, WithoutRugosityTheMinimumBandStillGivesContacts) {
+  // σ = 0 on both: a gap of 1e-7 (below the 1e-6-of-size minimum band) is a contact, 1e-5 is
+  // apart, and crossing is still crossing.
+  const CollisionShape smooth_disk = make_shape(circle_control_points(0.5, 64), 0.0);
+  const CollisionShape smooth_floor = make_shape(box_control_points(4.0, 0.4, 48), 0.0);
+  BodyPairCollider collider;
+  ContactManifold m;
+  collider.collide(smooth_disk, Transform2(0.0, Vec2(0.0, 0.5 + 1e-7)), smooth_floor, kFloorPlace,
+                   m);
+  EXPECT_EQ(m.state(), PairState::kContact);
+  collider.collide(smooth_disk, Transform2(0.0, Vec2(0.0, 0.5 + 1e-5)), smooth_floor, kFloorPlace,
+                   m);
+  EXPECT_EQ(m.state(), PairState::kSeparated);
+  collider.collide(smooth_disk, Transform2(0.0, Vec2(0.0, 0.5 - 1e-5)), smooth_floor, kFloorPlace,
+                   m);
+  EXPECT_EQ(m.state(), PairState::kIntersecting);
+}
+
+TEST(MergeDuplicateContacts, MergesOnlyTheSamePlaceOnNeighbouringSegments) {
+  auto contact = [](std::size_t sa, std::size_t sb, double x, double distance) {
+    Contact c;
+    c.segment_a = sa;
+    c.segment_b = sb;
+    c.lambda_a = c.lambda_b = 0.001;
+    c.point_a = Vec2(x, distance);
+    c.point_b = Vec2(x, 0.0);
+    c.point = Vec2(x, distance / 2);
+    c.distance = distance;
+    return c;
+  };
+  std::vector<Contact> contacts = {
+      contact(3, 7, 1.0, 0.0010),          // a joint, found by pair (3, 7) ...
+      contact(4, 7, 1.0 + 1e-15, 0.0010),  // ... and by its neighbour (4, 7): merged
+      contact(4, 8, 1.05, 0.0012),         // adjacent segments but 5 cm away: kept
+      contact(9, 7, 1.0005, 0.0011),       // within the band but not a neighbour of 3 or 4: kept
+  };
+  merge_duplicate_contacts(contacts, 16, 16);
+  ASSERT_EQ(contacts.size(), 3u);
+  EXPECT_EQ(contacts[0].segment_a, 3u);  // the closest of the merged pair (tie: lower segment)
+  EXPECT_EQ(contacts[1].segment_a, 4u);
+  EXPECT_EQ(contacts[1].segment_b, 8u);
+  EXPECT_EQ(contacts[2].segment_a, 9u);
 }
 
 }  // namespace

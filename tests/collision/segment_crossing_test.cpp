@@ -133,18 +133,28 @@ TEST(FindCrossing, DegeneratePointSegments) {
   EXPECT_FALSE(find_crossing(p_on, p_off).has_value());
 }
 
-TEST(FindCrossing, AgreesWithNearestPointsThroughTheThreshold) {
-  // crossing_from() on the same nearest points gives the same answer as find_crossing().
+TEST(FindCrossing, ThresholdSeparatesTouchingFromNearlyTouching) {
+  // An upward parabola whose apex sits `gap` above the line y = 0: it crosses for gap < 0 and
+  // is apart, at distance gap, for gaps well above the rounding threshold (~4e-12 of the size).
+  // An exact tangent touch (gap 0 or 1e-14) is found within 1e-11; whether it counts as a
+  // crossing is a matter of rounding, but find_crossing and crossing_from must agree on it.
   const CubicSegment a = segment_from_bezier(straight_polygon({0.0, 0.0}, {1.0, 0.0}));
   for (const double gap : {-1e-3, 0.0, 1e-14, 1e-9, 1e-3}) {
-    const CubicSegment b = segment_from_bezier(parabola(0.5, -1.0, 0.5));
-    BezierPolygon moved = b.bezier();
+    BezierPolygon moved = parabola(0.5, 1.0, 0.5);
     for (Vec2& p : moved)
       p += Vec2(0.5, gap);
-    const CubicSegment c = segment_from_bezier(moved);
-    const NearestPoints n = nearest_points(a, c);
-    EXPECT_EQ(find_crossing(a, c).has_value(), crossing_from(n, a, c).has_value());
-    EXPECT_EQ(find_crossing(a, c).has_value(), n.distance <= crossing_distance(a, c));
+    const CubicSegment b = segment_from_bezier(moved);
+    const NearestPoints n = nearest_points(a, b);
+    const bool crosses = find_crossing(a, b).has_value();
+    EXPECT_EQ(crossing_from(n, a, b).has_value(), crosses) << gap;
+    if (gap < 0.0) {
+      EXPECT_TRUE(crosses);
+    } else if (gap < 1e-12) {
+      EXPECT_LE(n.distance, 1e-11) << gap;
+    } else {
+      EXPECT_FALSE(crosses) << gap;
+      EXPECT_NEAR(n.distance, gap, 1e-11) << gap;
+    }
   }
 }
 
