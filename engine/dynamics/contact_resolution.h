@@ -1,0 +1,60 @@
+// Impulses for every contact of an accepted state (paper §4.3; DESIGN.md, "Dynamics").
+//
+// Material mixing: μ = max(μ_a(t_a), μ_b(t_b)) from rugosity (§4.2), ε = max(ε_a, ε_b) and
+// ε_max = max(ε_max,a, ε_max,b). The max follows the paper's rule for μ (the livelier surface
+// decides) and keeps ε <= ε_max, which each material already guarantees.
+//
+// Band of a contact: λ = max(λ_a(t_a) + λ_b(t_b), min_band_a + min_band_b), the same band the
+// collision layer used to call the pair a contact; the penetration into it is
+// δ = clamp(λ − distance, 0, λ).
+//
+// Resting contact by micro-collisions (§4.3). Let g_n be gravity's component pressing the
+// contact shut: −g·n when only A moves, g·n when only B moves, |g·n| when both move (the upper
+// body presses on the lower one). A contact is resting when g_n > 0, δ > 0 and it approaches
+// slowly, −√(2 g_n λ) < v_n < 0: no faster than a fall through the whole band. It then gets a
+// micro-collision: the impulse is computed as if the approach speed were
+// v_n* = min(v_n, −√(2 g_n δ)) with restitution ε_c(δ) = (ε_max − ε)/λ²·δ² + ε, and applied to
+// the real velocities, which then leave at v_n − (1 + ε_c)·v_n* >= 0. Deeper in the band the
+// push is stronger, so a body hovers in its band instead of sinking through it. With zero
+// gravity, or gravity not pressing (g_n <= 0), every approaching contact is a plain collision,
+// and a contact with v_n >= 0 gets nothing.
+//
+// Several contacts: each pass sorts the approaching contacts by their (perturbed) approach
+// speed, most negative first, and recomputes each one's velocities just before its impulse;
+// passes repeat until one applies nothing. Passes are bounded; when they run out with a
+// contact still approaching, the rest is left to the next step's back-off (counted as a
+// fallback).
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/collision/contact.h"
+#include "engine/core/types.h"
+#include "engine/dynamics/event_record.h"
+#include "engine/dynamics/rigid_body.h"
+
+namespace rugosim {
+
+struct ResolutionSettings {
+  Vec2 gravity = Vec2(0.0, -9.81);  // m/s²
+  double friction_gain = 100.0;     // k, 1/m
+  int max_passes = 64;              // bound on passes over all contacts
+};
+
+struct ResolutionCounts {
+  std::uint64_t collisions = 0;  // plain collision impulses
+  std::uint64_t contacts = 0;    // micro-collision impulses
+  std::uint64_t passes = 0;
+  bool passes_exhausted = false;  // the bound was hit with a contact still approaching
+};
+
+// Applies impulses to `bodies` (indexed as in the manifolds) for every approaching contact of
+// `manifolds`, and appends one event per impulse to `events` (when not null) stamped `time`.
+ResolutionCounts resolve_contacts(std::span<RigidBody> bodies,
+                                  std::span<const ContactManifold> manifolds,
+                                  const ResolutionSettings& settings, double time,
+                                  std::vector<ContactEvent>* events);
+
+}  // namespace rugosim

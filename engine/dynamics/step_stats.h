@@ -1,0 +1,27 @@
+// Counters of the World's time stepping, for stats.json (INTERFACE.md) and for tests that must
+// see every fallback: a loop that hit its bound shows up here instead of silently.
+#pragma once
+
+#include <cstdint>
+
+namespace rugosim {
+
+struct StepStats {
+  std::uint64_t steps = 0;       // accepted internal steps
+  std::uint64_t bisections = 0;  // trial states tried while backing off to first contact
+  std::uint64_t collisions = 0;  // impulses from plain collisions (events of kind collision)
+  std::uint64_t contacts = 0;    // resting-contact micro-collisions (events of kind contact)
+  // Every time a bounded loop ran out and a documented fallback was used (the sum of the
+  // three kinds below).
+  std::uint64_t fallbacks = 0;
+  std::uint64_t min_step_fallbacks = 0;  // back-off reached the minimum step without progress
+  std::uint64_t pass_fallbacks = 0;      // resolution passes ran out with contacts approaching
+  std::uint64_t crossing_fallbacks = 0;  // repeated min-step fallbacks: a crossing was accepted
+  // Accepted states in which two boundaries cross: 0 is the goal, and only
+  // crossing_fallbacks can make it grow.
+  std::uint64_t crossings = 0;
+  std::uint64_t passes = 0;  // contact-resolution passes over all the contacts of a state
+  double sim_time = 0.0;     // s simulated
+};
+
+}  // namespace rugosim

@@ -1,0 +1,113 @@
+// The World: rigid bodies advanced in time under gravity, with collisions and resting contact
+// resolved by impulses (paper §4; DESIGN.md, "Dynamics").
+//
+// One internal step of size h (at most max_step, and never past the target time):
+//  1. Every movable body is moved from its state at the step's start by exact free flight
+//     (free_flight.h), and collision detection runs on the trial state.
+//  2. If a pair crosses, the step is rejected and bisected on [lo, hi] = [0, h]: a trial that
+//     crosses becomes hi, one that does not becomes lo. It stops, accepting the trial, as soon
+//     as a non-crossing trial has a tolerated contact on a pair that crosses at hi: the bodies
+//     are then within their band, never across it. Bisection is bounded by max_bisections and
+//     by hi − lo <= min_step; when it runs out without such a trial, the last lo is accepted
+//     if lo > 0 (the gap closes on a later step). If lo = 0 (even a step of min_step crosses),
+//     the fallback stops the movable bodies of the crossing pairs (v = 0, ω = 0) and accepts the
+//     unchanged state, counted in min_step_fallbacks; after kMaxConsecutiveFallbacks such
+//     fallbacks in a row the whole trial step h is accepted although it crosses, counted in
+//     crossing_fallbacks and crossings, so that time always moves on.
+//  3. Contacts of the accepted state get impulses (contact_resolution.h: collisions, and
+//     micro-collisions for resting contact; material mixing and gravity rules are there).
+//
+// The whole world backs off together (not per island), and bodies never sleep: both are
+// left for later. Determinism: only ordered containers and a fixed order of operations, so
+// the same bodies and settings give bit-identical states, events and stats.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "engine/collision/collision_pipeline.h"
+#include "engine/core/types.h"
+#include "engine/dynamics/event_record.h"
+#include "engine/dynamics/rigid_body.h"
+#include "engine/dynamics/step_stats.h"
+
+namespace rugosim {
+
+struct WorldSettings {
+  Vec2 gravity = Vec2(0.0, -9.81);  // m/s²
+  // k in μ = k·max(0, λ − λ_min), 1/m: 100/m gives μ = 0.1 for λ − λ_min = 1 mm, the scale of
+  // the rugosities of the paper's examples in metres.
+  double friction_gain = 100.0;
+  // s: the longest internal step. 1 ms keeps a 1 m fall at 4.4 m/s to 4.4 mm per step, so a
+  // pile is checked often enough for contacts to be found near where they begin.
+  double max_step = 1e-3;
+  // s: bisection stops below this step. 1e-9 s at 10 m/s is 10 nm, below the minimum band
+  // (1e-6 of a 1 m body), so a contact is normally caught before the bound is reached.
+  double min_step = 1e-9;
+  // Bisections per step: 2^-60 of max_step is far below min_step, so min_step binds first.
+  int max_bisections = 60;
+  // Passes of contact resolution per accepted state.
+  int max_resolution_passes = 64;
+  bool record_events = true;  // keep a ContactEvent per impulse (events())
+};
+
+class World {
+ public:
+  // After this many min-step fallbacks in a row, a crossing state is accepted (see above).
+  static constexpr int kMaxConsecutiveFallbacks = 8;
+
+  // Throws std::invalid_argument on non-finite gravity, a negative friction gain, steps that
+  // are not 0 < min_step <= max_step, or non-positive loop bounds.
+  explicit World(WorldSettings settings = {});
+
+  // Adds a body and returns its index (events and manifolds name bodies by it). The name is
+  // for the caller's telemetry; the World does not require it to be unique.
+  std::size_t add_body(RigidBody body, std::string name = {});
+
+  std::size_t body_count() const { return bodies_.size(); }
+  const RigidBody& body(std::size_t i) const { return bodies_[i]; }
+  // Direct access, e.g. to set a state between calls to advance_to.
+  RigidBody& body(std::size_t i) { return bodies_[i]; }
+  const std::string& name(std::size_t i) const { return names_[i]; }
+  const WorldSettings& settings() const { return settings_; }
+
+  double time() const { return time_; }  // s
+
+  // Advances to time t (s) by internal steps; nothing happens when t <= time().
+  void advance_to(double t);
+
+  const StepStats& stats() const { return stats_; }
+  // Every impulse since construction or the last clear_events(), in the order applied.
+  const std::vector<ContactEvent>& events() const { return events_; }
+  void clear_events() { events_.clear(); }
+  // The crossings and contacts of the last accepted state (positions do not change while
+  // impulses are applied, so these still describe the current state).
+  const std::vector<ContactManifold>& manifolds() const { return manifolds_; }
+
+ private:
+  // Places every movable body at dt (s) of free flight from start_[i].
+  void place_at(double dt);
+  // Runs detection on the current placement; result in detected_.
+  const std::vector<ContactManifold>& detect();
+  // One internal step of at most h (s); returns the time actually advanced (may be 0).
+  double step(double h);
+  // Bisects a step of h whose end crosses; returns the accepted dt, leaves the bodies there
+  // and the accepted manifolds in manifolds_.
+  double back_off(double h);
+
+  WorldSettings settings_;
+  std::vector<RigidBody> bodies_;
+  std::vector<std::string> names_;
+  std::vector<BodyState> start_;  // states at the start of the current step
+  std::vector<PlacedShape> placed_;
+  CollisionPipeline pipeline_;
+  std::vector<ContactManifold> detected_;   // copy of the latest detection
+  std::vector<ContactManifold> manifolds_;  // of the accepted state
+  std::vector<ContactEvent> events_;
+  StepStats stats_;
+  double time_ = 0.0;  // s
+  int consecutive_fallbacks_ = 0;
+};
+
+}  // namespace rugosim
