@@ -11,17 +11,12 @@
 #include "engine/core/random.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/geometry/shapes.h"
+#include "support/test_output.h"
 
 namespace rugosim {
 namespace {
 
-// For RecordProperty: three significant digits, whatever the magnitude.
-std::string scientific(double x) {
-  std::ostringstream out;
-  out.precision(3);
-  out << std::scientific << x;
-  return out.str();
-}
+using testing::scientific;
 
 constexpr int kCases = 1000;
 

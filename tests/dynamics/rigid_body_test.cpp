@@ -17,17 +17,12 @@
 #include "engine/geometry/mass_properties.h"
 #include "engine/geometry/shapes.h"
 #include "support/random_curves.h"
+#include "support/test_output.h"
 
 namespace rugosim {
 namespace {
 
-// For RecordProperty: three significant digits, whatever the magnitude.
-std::string scientific(double x) {
-  std::ostringstream out;
-  out.precision(3);
-  out << std::scientific << x;
-  return out.str();
-}
+using testing::scientific;
 
 using testing::extent_of;
 using testing::random_control_polygon;

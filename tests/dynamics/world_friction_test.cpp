@@ -15,25 +15,13 @@
 #include "engine/dynamics/rigid_body.h"
 #include "engine/dynamics/world.h"
 #include "engine/geometry/shapes.h"
+#include "support/test_output.h"
 
 namespace rugosim {
 namespace {
 
-// For RecordProperty: enough digits to compare runs.
-std::string digits(double x) {
-  std::ostringstream out;
-  out.precision(6);
-  out << std::scientific << x;
-  return out.str();
-}
-
-Material make_material(double restitution, double restitution_max, double lambda_min = 0.0) {
-  Material m;
-  m.restitution = restitution;
-  m.restitution_max = restitution_max;
-  m.lambda_min = lambda_min;
-  return m;
-}
+using testing::make_material;
+using testing::scientific;
 
 // A movable w x h block (sharp box, σ = 0, so μ = 0 on its own side) with its centre at
 // `centre`.
@@ -172,11 +160,11 @@ TEST(WorldFriction, BlockStaysOnInclineBelowFrictionAngle) {
     worst = std::max(worst, std::abs(s));
   // One step of free flight between micro-collisions (n = 1), over 1 s.
   const double creep_predicted = 0.5 * kG * std::sin(theta) * WorldSettings{}.max_step * 1.0;
-  RecordProperty("settled_creep_over_1s", digits(settled_creep));
-  RecordProperty("settled_creep_predicted", digits(creep_predicted));
-  RecordProperty("release_displacement_at_0.2s", digits(run.s[sample_at(0.2)]));
-  RecordProperty("max_displacement", digits(worst));
-  RecordProperty("final_velocity", digits(run.v.back()));
+  RecordProperty("settled_creep_over_1s", scientific(settled_creep, 6));
+  RecordProperty("settled_creep_predicted", scientific(creep_predicted, 6));
+  RecordProperty("release_displacement_at_0.2s", scientific(run.s[sample_at(0.2)], 6));
+  RecordProperty("max_displacement", scientific(worst, 6));
+  RecordProperty("final_velocity", scientific(run.v.back(), 6));
   EXPECT_LT(std::abs(settled_creep), 4e-3);
   EXPECT_LT(worst, 8e-3);
   EXPECT_LT(std::abs(run.v.back()), 1e-2);
@@ -196,9 +184,9 @@ TEST(WorldFriction, BlockSlidesDownInclineAboveFrictionAngle) {
   const double a_expected = kG * (std::sin(theta) - kMu * std::cos(theta));
   const double a_fit = fit_acceleration(run, 0.1, 0.6);
   const double rel = std::abs(a_fit - a_expected) / a_expected;
-  RecordProperty("a_fit", digits(a_fit));
-  RecordProperty("a_expected", digits(a_expected));
-  RecordProperty("a_rel_error", digits(rel));
+  RecordProperty("a_fit", scientific(a_fit, 6));
+  RecordProperty("a_expected", scientific(a_expected, 6));
+  RecordProperty("a_rel_error", scientific(rel, 6));
   EXPECT_LT(rel, 1e-2);
   EXPECT_EQ(run.crossings, 0u);
   EXPECT_EQ(run.fallbacks, 0u);
@@ -257,11 +245,11 @@ TEST(WorldFriction, RoughPatchStopsSlidingBlock) {
   world.advance_to(t_reach + 2.0 * v0 / (mu_patch * kG) + 0.3);
   const double front_stop = world.body(b).state().position.x() + 0.5 * w - x_p;
   const double v_end = world.body(b).state().velocity.norm();
-  RecordProperty("segment_length", digits(segment_length));
-  RecordProperty("v_before_patch", digits(v_before));
-  RecordProperty("front_stop_from_patch", digits(front_stop));
-  RecordProperty("d_closed_form", digits(d));
-  RecordProperty("v_end", digits(v_end));
+  RecordProperty("segment_length", scientific(segment_length, 6));
+  RecordProperty("v_before_patch", scientific(v_before, 6));
+  RecordProperty("front_stop_from_patch", scientific(front_stop, 6));
+  RecordProperty("d_closed_form", scientific(d, 6));
+  RecordProperty("v_end", scientific(v_end, 6));
   EXPECT_LT(std::abs(v_before - v0) / v0, 1e-3);
   EXPECT_GE(front_stop, d - segment_length);
   EXPECT_LE(front_stop, d + w + segment_length);

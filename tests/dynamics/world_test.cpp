@@ -14,25 +14,13 @@
 #include "engine/collision/collision_pipeline.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/geometry/shapes.h"
+#include "support/test_output.h"
 
 namespace rugosim {
 namespace {
 
-// For RecordProperty: enough digits to compare runs.
-std::string digits(double x) {
-  std::ostringstream out;
-  out.precision(6);
-  out << std::scientific << x;
-  return out.str();
-}
-
-Material make_material(double restitution, double restitution_max, double lambda_min = 0.0) {
-  Material m;
-  m.restitution = restitution;
-  m.restitution_max = restitution_max;
-  m.lambda_min = lambda_min;
-  return m;
-}
+using testing::make_material;
+using testing::scientific;
 
 RigidBody disk(double radius, std::size_t segments, const Vec2& centre, const Vec2& velocity,
                const Material& material, double sigma = 0.0) {
@@ -116,9 +104,9 @@ TEST(World, BouncingDiskApexRatioIsRestitutionSquared) {
     worst_abs = std::max(worst_abs, std::abs(apexes[i] - eps * eps * apexes[i - 1]));
   }
   const double first_rel = std::abs(apexes[1] / apexes[0] - eps * eps) / (eps * eps);
-  RecordProperty("band", digits(band));
-  RecordProperty("worst_apex_abs_error", digits(worst_abs));
-  RecordProperty("first_ratio_rel_error", digits(first_rel));
+  RecordProperty("band", scientific(band, 6));
+  RecordProperty("worst_apex_abs_error", scientific(worst_abs, 6));
+  RecordProperty("first_ratio_rel_error", scientific(first_rel, 6));
   EXPECT_LT(worst_abs, band);
   EXPECT_LT(first_rel, 1e-4);
   EXPECT_EQ(world.stats().crossings, 0u);
@@ -164,9 +152,9 @@ TEST(World, TwoFreeBodiesConserveMomentumAndEnergy) {
   const double dl = std::abs(after.angular - before.angular) / l_scale;
   const double de = std::abs(after.energy - before.energy) / before.energy;
   RecordProperty("collisions", std::to_string(world.stats().collisions));
-  RecordProperty("linear_momentum_rel_error", digits(dp));
-  RecordProperty("angular_momentum_rel_error", digits(dl));
-  RecordProperty("energy_rel_error", digits(de));
+  RecordProperty("linear_momentum_rel_error", scientific(dp, 6));
+  RecordProperty("angular_momentum_rel_error", scientific(dl, 6));
+  RecordProperty("energy_rel_error", scientific(de, 6));
   EXPECT_LT(dp, 1e-9);
   EXPECT_LT(dl, 1e-9);
   EXPECT_LT(de, 1e-8);
@@ -189,7 +177,7 @@ TEST(World, DroppedDiskComesToRestInsideTheBand) {
     world.advance_to(2.5 + frame * 1e-3);
     worst_speed = std::max(worst_speed, world.body(d).state().velocity.norm());
   }
-  RecordProperty("worst_speed_last_half_second", digits(worst_speed));
+  RecordProperty("worst_speed_last_half_second", scientific(worst_speed, 6));
   RecordProperty("contacts", std::to_string(world.stats().contacts));
   RecordProperty("bisections", std::to_string(world.stats().bisections));
   EXPECT_LT(worst_speed, 1e-2);
@@ -233,13 +221,13 @@ TEST(World, SlidingDiskDeceleratesThenRolls) {
   const double err_mid = std::abs(v_mid - v_mid_expected) / v_mid_expected;
   const double err_roll = std::abs(v_roll - v_roll_expected) / v_roll_expected;
   const double err_spin = std::abs(-omega_roll * r - v_roll) / v_roll;
-  RecordProperty("v_mid", digits(v_mid));
-  RecordProperty("v_mid_expected", digits(v_mid_expected));
-  RecordProperty("v_roll", digits(v_roll));
-  RecordProperty("v_roll_expected", digits(v_roll_expected));
-  RecordProperty("rolling_mismatch", digits(err_spin));
-  RecordProperty("v_mid_rel_error", digits(err_mid));
-  RecordProperty("v_roll_rel_error", digits(err_roll));
+  RecordProperty("v_mid", scientific(v_mid, 6));
+  RecordProperty("v_mid_expected", scientific(v_mid_expected, 6));
+  RecordProperty("v_roll", scientific(v_roll, 6));
+  RecordProperty("v_roll_expected", scientific(v_roll_expected, 6));
+  RecordProperty("rolling_mismatch", scientific(err_spin, 6));
+  RecordProperty("v_mid_rel_error", scientific(err_mid, 6));
+  RecordProperty("v_roll_rel_error", scientific(err_roll, 6));
   // Measured: 5e-5, 4e-3 and 6e-3. The rolling mismatch is the contact point sitting half a
   // band (1.5 mm) off the surface, 1.5e-3 / 0.25 = 0.6% (DESIGN.md, "Dynamics").
   EXPECT_LT(err_mid, 1e-2);
