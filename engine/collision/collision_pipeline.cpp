@@ -11,7 +11,8 @@ const std::vector<ContactManifold>& CollisionPipeline::detect(std::span<const Pl
     proxies_[i].fixed = bodies[i].fixed;
     proxies_[i].asleep = bodies[i].asleep;
   }
-  const std::vector<BodyPair>& pairs = broad_phase_.find_pairs(proxies_);
+  near_pairs_ = broad_phase_.find_pairs(proxies_);
+  const std::vector<BodyPair>& pairs = near_pairs_;
   counts_.body_pairs = pairs.size();
   for (const BodyPair& pair : pairs) {
     const PlacedShape& a = bodies[pair.a];

@@ -35,12 +35,16 @@ class CollisionPipeline {
   const std::vector<ContactManifold>& detect(std::span<const PlacedShape> bodies);
 
   const CollisionCounts& counts() const { return counts_; }
+  // The broad-phase pairs of the last detect(): bodies whose boxes (band included) overlap,
+  // touching or not; sorted by (a, b).
+  const std::vector<BodyPair>& near_pairs() const { return near_pairs_; }
 
  private:
   SweepAndPrune broad_phase_;
   BodyPairCollider collider_;
   std::vector<BroadPhaseProxy> proxies_;
   std::vector<ContactManifold> manifolds_;
+  std::vector<BodyPair> near_pairs_;
   ContactManifold scratch_;
   CollisionCounts counts_;
 };

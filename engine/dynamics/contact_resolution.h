@@ -19,11 +19,19 @@
 // gravity, or gravity not pressing (g_n <= 0), every approaching contact is a plain collision,
 // and a contact with v_n >= 0 gets nothing.
 //
+// Resolved: a contact needs an impulse only when it approaches faster than
+// resolved_gap_fraction × distance / max_step, i.e. when it would close more than that
+// fraction (0.1%) of the gap left between the curves within a step. Slower approaches are
+// rounding residues of earlier impulses (or of a rigid cluster) that the next step catches
+// long before they matter, and chasing them would spend every pass for nothing; a contact
+// with no gap left counts any approach.
+//
 // Several contacts: each pass sorts the approaching contacts by their (perturbed) approach
 // speed, most negative first, and recomputes each one's velocities just before its impulse;
 // passes repeat until one applies nothing. Passes are bounded; when they run out with a
-// contact still approaching, the rest is left to the next step's back-off (counted as a
-// fallback).
+// contact still approaching (counted as a fallback), the clusters holding such contacts are
+// resolved as rigid bodies (rigid_cluster.h). Whatever still approaches after that is left to
+// the next step's back-off.
 #pragma once
 
 #include <cstdint>
@@ -38,16 +46,20 @@
 namespace rugosim {
 
 struct ResolutionSettings {
-  Vec2 gravity = Vec2(0.0, -9.81);  // m/s²
-  double friction_gain = 100.0;     // k, 1/m
-  int max_passes = 64;              // bound on passes over all contacts
+  Vec2 gravity = Vec2(0.0, -9.81);      // m/s²
+  double friction_gain = 100.0;         // k, 1/m
+  int max_passes = 64;                  // bound on passes over all contacts
+  double max_step = 1e-3;               // s, the World's longest step
+  double resolved_gap_fraction = 1e-3;  // see "Resolved" above
 };
 
 struct ResolutionCounts {
   std::uint64_t collisions = 0;  // plain collision impulses
   std::uint64_t contacts = 0;    // micro-collision impulses
   std::uint64_t passes = 0;
-  bool passes_exhausted = false;  // the bound was hit with a contact still approaching
+  bool passes_exhausted = false;     // the bound was hit with a contact still approaching
+  std::uint64_t rigid_clusters = 0;  // clusters then resolved as rigid bodies
+  bool still_approaching = false;    // a contact approached even after that
 };
 
 // Applies impulses to `bodies` (indexed as in the manifolds) for every approaching contact of

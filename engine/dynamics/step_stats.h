@@ -16,12 +16,19 @@ struct StepStats {
   std::uint64_t fallbacks = 0;
   std::uint64_t min_step_fallbacks = 0;  // back-off reached the minimum step without progress
   std::uint64_t pass_fallbacks = 0;      // resolution passes ran out with contacts approaching
+  std::uint64_t rigid_clusters = 0;      // clusters then resolved as rigid bodies (pass_fallbacks)
+  // Accepted states left with a contact approaching even after the rigid clusters.
+  std::uint64_t unresolved_states = 0;
   std::uint64_t crossing_fallbacks = 0;  // repeated min-step fallbacks: a crossing was accepted
   // Accepted states in which two boundaries cross: 0 is the goal, and only
   // crossing_fallbacks can make it grow.
   std::uint64_t crossings = 0;
-  std::uint64_t passes = 0;  // contact-resolution passes over all the contacts of a state
-  double sim_time = 0.0;     // s simulated
+  std::uint64_t passes = 0;         // contact-resolution passes over all the contacts of a state
+  std::uint64_t islands_slept = 0;  // islands of resting bodies put to sleep
+  std::uint64_t islands_woken = 0;  // sleeping islands woken by a touch
+  // Steps skipped because every movable body slept (the World jumped to the target time).
+  std::uint64_t idle_jumps = 0;
+  double sim_time = 0.0;  // s simulated
 };
 
 }  // namespace rugosim

@@ -39,7 +39,7 @@ bool touches_crossing_pair(const std::vector<ContactManifold>& manifolds,
 
 }  // namespace
 
-World::World(WorldSettings settings) : settings_(std::move(settings)) {
+World::World(WorldSettings settings) : settings_(std::move(settings)), sleep_(settings_.sleep) {
   if (!settings_.gravity.allFinite()) throw std::invalid_argument("gravity must be finite");
   if (!(std::isfinite(settings_.friction_gain) && settings_.friction_gain >= 0.0)) {
     throw std::invalid_argument("friction_gain must be finite and >= 0 (1/m)");
@@ -51,17 +51,23 @@ World::World(WorldSettings settings) : settings_(std::move(settings)) {
   if (settings_.max_bisections <= 0 || settings_.max_resolution_passes <= 0) {
     throw std::invalid_argument("max_bisections and max_resolution_passes must be > 0");
   }
+  if (!(settings_.sleep.time >= 0.0 && std::isfinite(settings_.sleep.time) &&
+        settings_.sleep.tolerance >= 0.0 && std::isfinite(settings_.sleep.tolerance) &&
+        settings_.sleep.bands >= 0.0 && std::isfinite(settings_.sleep.bands))) {
+    throw std::invalid_argument("sleep time (s), bands and tolerance must be finite and >= 0");
+  }
 }
 
 std::size_t World::add_body(RigidBody body, std::string name) {
   bodies_.push_back(std::move(body));
   names_.push_back(std::move(name));
+  sleep_.track(bodies_);
   return bodies_.size() - 1;
 }
 
 void World::place_at(double dt) {
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (bodies_[i].fixed()) continue;
+    if (bodies_[i].fixed() || sleep_.asleep(i)) continue;
     bodies_[i].set_state(free_flight(start_[i], settings_.gravity, dt));
   }
 }
@@ -72,9 +78,10 @@ const std::vector<ContactManifold>& World::detect() {
     placed_[i].shape = &bodies_[i].shape();
     placed_[i].placement = bodies_[i].placement();
     placed_[i].fixed = bodies_[i].fixed();
-    placed_[i].asleep = false;
+    placed_[i].asleep = sleep_.asleep(i);
   }
   detected_ = pipeline_.detect(placed_);
+  detected_pairs_ = pipeline_.near_pairs();
   return detected_;
 }
 
@@ -83,6 +90,7 @@ double World::back_off(double h) {
   double hi = h;
   std::vector<BodyPairKey> pairs = crossing_pairs(detected_);
   std::vector<ContactManifold> lo_manifolds;
+  std::vector<BodyPair> lo_pairs;
   for (int i = 0; i < settings_.max_bisections && hi - lo > settings_.min_step; ++i) {
     const double mid = lo + 0.5 * (hi - lo);
     place_at(mid);
@@ -95,9 +103,11 @@ double World::back_off(double h) {
     }
     lo = mid;
     lo_manifolds = detected_;
+    lo_pairs = detected_pairs_;
     if (touches_crossing_pair(detected_, pairs)) {
       consecutive_fallbacks_ = 0;
       manifolds_ = std::move(lo_manifolds);
+      near_pairs_ = std::move(lo_pairs);
       return mid;
     }
   }
@@ -106,6 +116,7 @@ double World::back_off(double h) {
     place_at(lo);
     consecutive_fallbacks_ = 0;
     manifolds_ = std::move(lo_manifolds);
+    near_pairs_ = std::move(lo_pairs);
     return lo;
   }
   ++stats_.fallbacks;
@@ -116,6 +127,7 @@ double World::back_off(double h) {
     ++stats_.crossing_fallbacks;
     consecutive_fallbacks_ = 0;
     manifolds_ = detect();
+    near_pairs_ = detected_pairs_;
     return h;
   }
   // Even min_step crosses: stop the bodies that would cross, and stay where we are.
@@ -131,6 +143,7 @@ double World::back_off(double h) {
     }
   }
   manifolds_ = detect();
+  near_pairs_ = detected_pairs_;
   return 0.0;
 }
 
@@ -142,6 +155,7 @@ double World::step(double h) {
   detect();
   if (!any_crossing(detected_)) {
     manifolds_ = detected_;
+    near_pairs_ = detected_pairs_;
     consecutive_fallbacks_ = 0;
     return h;
   }
@@ -150,8 +164,14 @@ double World::step(double h) {
 
 void World::advance_to(double t) {
   const ResolutionSettings resolution{settings_.gravity, settings_.friction_gain,
-                                      settings_.max_resolution_passes};
+                                      settings_.max_resolution_passes, settings_.max_step};
   while (time_ < t) {
+    if (!sleep_.any_awake_mover(bodies_)) {
+      // Nothing can move until something is woken from outside: no steps to take.
+      time_ = t;
+      ++stats_.idle_jumps;
+      break;
+    }
     const double remaining = t - time_;
     const double h = std::min(settings_.max_step, remaining);
     const double dt = step(h);
@@ -159,6 +179,7 @@ void World::advance_to(double t) {
     time_ = dt == remaining ? t : time_ + dt;
     ++stats_.steps;
     if (any_crossing(manifolds_)) ++stats_.crossings;
+    stats_.islands_woken += sleep_.wake_touched(bodies_, manifolds_);
     const ResolutionCounts counts = resolve_contacts(bodies_, manifolds_, resolution, time_,
                                                      settings_.record_events ? &events_ : nullptr);
     stats_.collisions += counts.collisions;
@@ -168,6 +189,9 @@ void World::advance_to(double t) {
       ++stats_.pass_fallbacks;
       ++stats_.fallbacks;
     }
+    stats_.rigid_clusters += counts.rigid_clusters;
+    if (counts.still_approaching) ++stats_.unresolved_states;
+    stats_.islands_slept += sleep_.update(bodies_, manifolds_, near_pairs_, time_);
   }
   stats_.sim_time = time_;
 }

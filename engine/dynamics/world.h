@@ -17,9 +17,14 @@
 //  3. Contacts of the accepted state get impulses (contact_resolution.h: collisions, and
 //     micro-collisions for resting contact; material mixing and gravity rules are there).
 //
-// The whole world backs off together (not per island), and bodies never sleep: both are
-// left for later. Determinism: only ordered containers and a fixed order of operations, so
-// the same bodies and settings give bit-identical states, events and stats.
+// 4. Sleeping (sleep_tracker.h): sleeping islands touched by an awake body wake before the
+//    impulses; islands that have been still long enough fall asleep after them. Sleeping
+//    bodies are not moved and pairs of them with fixed or sleeping bodies are not tested;
+//    when nothing movable is awake, advance_to jumps straight to its target time.
+//
+// The whole world backs off together (not per island). Determinism: only ordered containers and a
+// fixed order of operations, so the same bodies and settings give bit-identical states, events and
+// stats.
 #pragma once
 
 #include <cstddef>
@@ -30,6 +35,7 @@
 #include "engine/core/types.h"
 #include "engine/dynamics/event_record.h"
 #include "engine/dynamics/rigid_body.h"
+#include "engine/dynamics/sleep_tracker.h"
 #include "engine/dynamics/step_stats.h"
 
 namespace rugosim {
@@ -50,6 +56,7 @@ struct WorldSettings {
   // Passes of contact resolution per accepted state.
   int max_resolution_passes = 64;
   bool record_events = true;  // keep a ContactEvent per impulse (events())
+  SleepSettings sleep;
 };
 
 class World {
@@ -67,8 +74,12 @@ class World {
 
   std::size_t body_count() const { return bodies_.size(); }
   const RigidBody& body(std::size_t i) const { return bodies_[i]; }
-  // Direct access, e.g. to set a state between calls to advance_to.
+  // Direct access, e.g. to set a state between calls to advance_to. A sleeping body given a
+  // new state must be woken (wake) or it stays where it was put and does not move.
   RigidBody& body(std::size_t i) { return bodies_[i]; }
+  bool asleep(std::size_t i) const { return sleep_.asleep(i); }
+  // Wakes body i and the rest of its sleeping island; no-op when it is awake.
+  void wake(std::size_t i) { sleep_.wake(bodies_, i); }
   const std::string& name(std::size_t i) const { return names_[i]; }
   const WorldSettings& settings() const { return settings_; }
 
@@ -104,7 +115,10 @@ class World {
   CollisionPipeline pipeline_;
   std::vector<ContactManifold> detected_;   // copy of the latest detection
   std::vector<ContactManifold> manifolds_;  // of the accepted state
+  std::vector<BodyPair> detected_pairs_;    // broad-phase pairs of the latest detection
+  std::vector<BodyPair> near_pairs_;        // of the accepted state
   std::vector<ContactEvent> events_;
+  SleepTracker sleep_;
   StepStats stats_;
   double time_ = 0.0;  // s
   int consecutive_fallbacks_ = 0;

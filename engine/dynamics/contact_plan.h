@@ -1,0 +1,49 @@
+// How one contact is to be resolved (paper §4.2–4.3), from the current velocities: real
+// approach and slip, the approach speed the impulse is computed for (perturbed for a
+// micro-collision), restitution and friction. Rules in contact_resolution.h.
+#pragma once
+
+#include "engine/collision/contact.h"
+#include "engine/dynamics/collision_impulse.h"
+#include "engine/dynamics/event_record.h"
+#include "engine/dynamics/rigid_body.h"
+
+namespace rugosim {
+
+struct ResolutionSettings;
+
+struct ContactPlan {
+  ContactBodyState a;  // B's velocity already shifted for a micro-collision (see plan_contact)
+  ContactBodyState b;
+  double vn = 0.0;         // m/s, real approach speed
+  double vt = 0.0;         // m/s, real slip along perp(n)
+  double vn_target = 0.0;  // m/s, the approach speed the impulse is computed for
+  double restitution = 0.0;
+  double mu = 0.0;
+  bool micro = false;  // a resting-contact micro-collision
+  // Approaching fast enough to need an impulse (contact_resolution.h, "Resolved").
+  bool approaching = false;
+};
+
+// The motion of a body at a contact point.
+ContactBodyState contact_state(const RigidBody& body, const Vec2& point);
+
+// The plan for contact c between A and B moving as `state_a` and `state_b` (normally
+// contact_state of each body; a rigid cluster passes its composite motion instead). Materials,
+// friction and whether each side can move come from the bodies.
+ContactPlan plan_contact(const ContactBodyState& state_a, const ContactBodyState& state_b,
+                         const RigidBody& body_a, const RigidBody& body_b, const Contact& c,
+                         const ResolutionSettings& settings);
+
+inline ContactPlan plan_contact(const RigidBody& body_a, const RigidBody& body_b, const Contact& c,
+                                const ResolutionSettings& settings) {
+  return plan_contact(contact_state(body_a, c.point), contact_state(body_b, c.point), body_a,
+                      body_b, c, settings);
+}
+
+// The events.csv row of an impulse planned by p with result r.
+ContactEvent make_event(const RigidBody& a, const RigidBody& b, const ContactManifold& m,
+                        const Contact& c, const ContactPlan& p, const ImpulseResult& r,
+                        double time);
+
+}  // namespace rugosim

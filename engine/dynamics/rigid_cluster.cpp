@@ -1,0 +1,178 @@
+#include "engine/dynamics/rigid_cluster.h"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "engine/dynamics/collision_impulse.h"
+#include "engine/dynamics/contact_plan.h"
+#include "engine/dynamics/contact_resolution.h"
+
+namespace rugosim {
+namespace {
+
+std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];
+    i = parent[i];
+  }
+  return i;
+}
+
+// A cluster moving as one rigid body.
+struct Composite {
+  double mass = 0.0;              // kg
+  double inertia = 0.0;           // kg·m², about centre
+  Vec2 centre = Vec2::Zero();     // m, centre of mass
+  Vec2 velocity = Vec2::Zero();   // m/s
+  double angular_velocity = 0.0;  // rad/s
+
+  ContactBodyState at(const Vec2& point) const {
+    return {1.0 / mass, 1.0 / inertia, velocity, angular_velocity, point - centre};
+  }
+};
+
+// The rigid motion with the members' total linear and angular momentum.
+Composite make_composite(std::span<const RigidBody> bodies, std::span<const std::size_t> members) {
+  Composite c;
+  Vec2 momentum = Vec2::Zero();
+  for (const std::size_t i : members) {
+    const RigidBody& b = bodies[i];
+    c.mass += b.mass();
+    c.centre += b.mass() * b.state().position;
+    momentum += b.mass() * b.state().velocity;
+  }
+  c.centre /= c.mass;
+  c.velocity = momentum / c.mass;
+  double angular_momentum = 0.0;  // about the centre
+  for (const std::size_t i : members) {
+    const RigidBody& b = bodies[i];
+    const Vec2 r = b.state().position - c.centre;
+    c.inertia += b.inertia() + b.mass() * r.squaredNorm();
+    angular_momentum +=
+        b.inertia() * b.state().angular_velocity + b.mass() * cross(r, b.state().velocity);
+  }
+  c.angular_velocity = angular_momentum / c.inertia;
+  return c;
+}
+
+struct FixedContact {
+  std::size_t manifold = 0;
+  std::size_t contact = 0;
+  bool cluster_is_a = true;
+};
+
+}  // namespace
+
+ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
+                                     std::span<const ContactManifold> manifolds,
+                                     const ResolutionSettings& settings, double time,
+                                     std::vector<ContactEvent>* events) {
+  ClusterCounts counts;
+  const std::size_t n = bodies.size();
+  std::vector<std::size_t> parent(n);
+  for (std::size_t i = 0; i < n; ++i)
+    parent[i] = i;
+  for (const ContactManifold& m : manifolds) {
+    if (m.contacts.empty() || bodies[m.body_a].fixed() || bodies[m.body_b].fixed()) continue;
+    const std::size_t ra = find_root(parent, m.body_a);
+    const std::size_t rb = find_root(parent, m.body_b);
+    parent[std::max(ra, rb)] = std::min(ra, rb);
+  }
+  std::vector<std::uint8_t> marked(n, 0);
+  for (const ContactManifold& m : manifolds) {
+    for (const Contact& c : m.contacts) {
+      if (!plan_contact(bodies[m.body_a], bodies[m.body_b], c, settings).approaching) continue;
+      if (!bodies[m.body_a].fixed()) marked[find_root(parent, m.body_a)] = 1;
+      if (!bodies[m.body_b].fixed()) marked[find_root(parent, m.body_b)] = 1;
+    }
+  }
+
+  std::vector<std::size_t> members;
+  std::vector<FixedContact> fixed_contacts;
+  struct Candidate {
+    double approach = 0.0;
+    std::size_t index = 0;
+  };
+  std::vector<Candidate> order;
+  for (std::size_t root = 0; root < n; ++root) {
+    if (marked[root] == 0) continue;
+    members.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!bodies[i].fixed() && find_root(parent, i) == root) members.push_back(i);
+    }
+    Composite composite = make_composite(bodies, members);
+    ++counts.clusters;
+
+    fixed_contacts.clear();
+    for (std::size_t k = 0; k < manifolds.size(); ++k) {
+      const ContactManifold& m = manifolds[k];
+      const bool a_in = !bodies[m.body_a].fixed() && find_root(parent, m.body_a) == root;
+      const bool b_in = !bodies[m.body_b].fixed() && find_root(parent, m.body_b) == root;
+      if (a_in == b_in) continue;  // inside the cluster, or not touching it
+      for (std::size_t c = 0; c < m.contacts.size(); ++c)
+        fixed_contacts.push_back({k, c, a_in});
+    }
+
+    auto plan = [&](const FixedContact& f) {
+      const ContactManifold& m = manifolds[f.manifold];
+      const Contact& c = m.contacts[f.contact];
+      const RigidBody& a = bodies[m.body_a];
+      const RigidBody& b = bodies[m.body_b];
+      return f.cluster_is_a
+                 ? plan_contact(composite.at(c.point), contact_state(b, c.point), a, b, c, settings)
+                 : plan_contact(contact_state(a, c.point), composite.at(c.point), a, b, c,
+                                settings);
+    };
+    for (int pass = 0; pass < settings.max_passes; ++pass) {
+      order.clear();
+      for (std::size_t i = 0; i < fixed_contacts.size(); ++i) {
+        const ContactPlan p = plan(fixed_contacts[i]);
+        if (p.approaching) order.push_back({p.vn_target, i});
+      }
+      if (order.empty()) break;
+      ++counts.passes;
+      std::sort(order.begin(), order.end(), [](const Candidate& x, const Candidate& y) {
+        return x.approach < y.approach || (x.approach == y.approach && x.index < y.index);
+      });
+      for (const Candidate& candidate : order) {
+        const FixedContact& f = fixed_contacts[candidate.index];
+        const ContactManifold& m = manifolds[f.manifold];
+        const Contact& c = m.contacts[f.contact];
+        const ContactPlan p = plan(f);
+        if (!p.approaching) continue;
+        const ImpulseResult r = collision_impulse(p.a, p.b, c.normal, p.restitution, p.mu);
+        if (!r.collision) continue;
+        // The impulse on the cluster: +J when it is A, −J when it is B.
+        const Vec2 impulse = f.cluster_is_a ? r.impulse : Vec2(-r.impulse);
+        const Vec2 arm = c.point - composite.centre;
+        composite.velocity += impulse / composite.mass;
+        composite.angular_velocity += cross(arm, impulse) / composite.inertia;
+        if (p.micro) {
+          ++counts.contacts;
+        } else {
+          ++counts.collisions;
+        }
+        if (events != nullptr) {
+          events->push_back(make_event(bodies[m.body_a], bodies[m.body_b], m, c, p, r, time));
+        }
+      }
+    }
+
+    for (const FixedContact& f : fixed_contacts) {
+      if (plan(f).approaching) {
+        counts.still_approaching = true;
+        break;
+      }
+    }
+    for (const std::size_t i : members) {
+      BodyState s = bodies[i].state();
+      s.velocity =
+          composite.velocity + composite.angular_velocity * perp(s.position - composite.centre);
+      s.angular_velocity = composite.angular_velocity;
+      bodies[i].set_state(s);
+    }
+  }
+  return counts;
+}
+
+}  // namespace rugosim

@@ -1,0 +1,156 @@
+#include "engine/dynamics/sleep_tracker.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rugosim {
+namespace {
+
+bool touching(const ContactManifold& m) {
+  return m.state() != PairState::kSeparated;
+}
+
+std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
+  while (parent[i] != i) {
+    parent[i] = parent[parent[i]];  // path halving
+    i = parent[i];
+  }
+  return i;
+}
+
+// Union by smaller index, so every island's root is its smallest body index: deterministic,
+// and the island id stored while asleep.
+void unite(std::vector<std::size_t>& parent, std::size_t a, std::size_t b) {
+  const std::size_t ra = find_root(parent, a);
+  const std::size_t rb = find_root(parent, b);
+  if (ra < rb) {
+    parent[rb] = ra;
+  } else if (rb < ra) {
+    parent[ra] = rb;
+  }
+}
+
+}  // namespace
+
+void SleepTracker::track(std::span<const RigidBody> bodies) {
+  for (std::size_t i = asleep_.size(); i < bodies.size(); ++i) {
+    asleep_.push_back(0);
+    island_.push_back(i);
+    anchor_position_.push_back(bodies[i].state().position);
+    anchor_angle_.push_back(bodies[i].state().angle);
+    still_windows_.push_back(0);
+    band_seen_.push_back(0.0);
+  }
+}
+
+std::size_t SleepTracker::asleep_count() const {
+  return static_cast<std::size_t>(std::count(asleep_.begin(), asleep_.end(), 1));
+}
+
+bool SleepTracker::any_awake_mover(std::span<const RigidBody> bodies) const {
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    if (!bodies[i].fixed() && !asleep(i)) return true;
+  }
+  return false;
+}
+
+void SleepTracker::anchor(const RigidBody& body, std::size_t i) {
+  anchor_position_[i] = body.state().position;
+  anchor_angle_[i] = body.state().angle;
+  band_seen_[i] = 0.0;
+}
+
+void SleepTracker::wake_island(std::span<const RigidBody> bodies, std::size_t island) {
+  for (std::size_t i = 0; i < asleep_.size(); ++i) {
+    if (asleep_[i] == 0 || island_[i] != island) continue;
+    asleep_[i] = 0;
+    island_[i] = i;
+    still_windows_[i] = 0;
+    anchor(bodies[i], i);
+  }
+}
+
+void SleepTracker::wake(std::span<const RigidBody> bodies, std::size_t body) {
+  if (asleep(body)) wake_island(bodies, island_[body]);
+}
+
+std::uint64_t SleepTracker::wake_touched(std::span<const RigidBody> bodies,
+                                         std::span<const ContactManifold> manifolds) {
+  std::uint64_t woken = 0;
+  for (const ContactManifold& m : manifolds) {
+    if (!touching(m)) continue;
+    const std::size_t a = m.body_a;
+    const std::size_t b = m.body_b;
+    const bool a_awake_mover = !bodies[a].fixed() && !asleep(a);
+    const bool b_awake_mover = !bodies[b].fixed() && !asleep(b);
+    if (asleep(a) && b_awake_mover) {
+      wake_island(bodies, island_[a]);
+      ++woken;
+    } else if (asleep(b) && a_awake_mover) {
+      wake_island(bodies, island_[b]);
+      ++woken;
+    }
+  }
+  return woken;
+}
+
+std::uint64_t SleepTracker::update(std::span<RigidBody> bodies,
+                                   std::span<const ContactManifold> manifolds,
+                                   std::span<const BodyPair> near_pairs, double time) {
+  if (!settings_.enabled) return 0;
+  const std::size_t n = bodies.size();
+  for (const ContactManifold& m : manifolds) {
+    for (const Contact& c : m.contacts) {
+      const double band =
+          std::max(c.lambda_a + c.lambda_b,
+                   bodies[m.body_a].shape().min_band() + bodies[m.body_b].shape().min_band());
+      band_seen_[m.body_a] = std::max(band_seen_[m.body_a], band);
+      band_seen_[m.body_b] = std::max(band_seen_[m.body_b], band);
+    }
+  }
+  if (time < next_check_) return 0;
+  next_check_ = time + 0.5 * settings_.time;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (bodies[i].fixed() || asleep(i)) continue;
+    const BodyState& s = bodies[i].state();
+    const double radius = bodies[i].bounding_radius();
+    const double d = settings_.bands * band_seen_[i] + settings_.tolerance * radius;
+    const Vec2 moved = s.position - anchor_position_[i];
+    const double turned = std::abs(s.angle - anchor_angle_[i]) * radius;
+    const bool still = std::abs(moved.x()) <= d && std::abs(moved.y()) <= d && turned <= d;
+    still_windows_[i] = still ? still_windows_[i] + 1 : 0;
+    anchor(bodies[i], i);
+  }
+
+  parent_.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+    parent_[i] = i;
+  for (const BodyPair& pair : near_pairs) {
+    if (bodies[pair.a].fixed() || bodies[pair.b].fixed() || asleep(pair.a) || asleep(pair.b)) {
+      continue;
+    }
+    unite(parent_, pair.a, pair.b);
+  }
+  // An island sleeps when none of its bodies is restless: each had two still windows in a row.
+  restless_.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (bodies[i].fixed() || asleep(i)) continue;
+    if (still_windows_[i] < 2) restless_[find_root(parent_, i)] = 1;
+  }
+  std::uint64_t slept = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (bodies[i].fixed() || asleep(i)) continue;
+    const std::size_t root = find_root(parent_, i);
+    if (restless_[root] != 0) continue;
+    if (root == i) ++slept;
+    asleep_[i] = 1;
+    island_[i] = root;
+    BodyState s = bodies[i].state();
+    s.velocity = Vec2::Zero();
+    s.angular_velocity = 0.0;
+    bodies[i].set_state(s);
+  }
+  return slept;
+}
+
+}  // namespace rugosim
