@@ -14,61 +14,18 @@
 #include "engine/collision/collision_pipeline.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/geometry/shapes.h"
+#include "support/test_bodies.h"
 #include "support/test_output.h"
 
 namespace rugosim {
 namespace {
 
+using testing::blob;
+using testing::disk;
+using testing::floor_block;
 using testing::make_material;
+using testing::pair_state;
 using testing::scientific;
-
-RigidBody disk(double radius, std::size_t segments, const Vec2& centre, const Vec2& velocity,
-               const Material& material, double sigma = 0.0) {
-  RigidBodyDesc desc;
-  desc.control_points = circle_control_points(radius, segments);
-  desc.sigma.assign(segments, sigma);
-  desc.material = material;
-  desc.position = centre;
-  desc.velocity = velocity;
-  return RigidBody(desc);
-}
-
-RigidBody blob(double radius, std::uint64_t seed, const Vec2& centre, const Vec2& velocity,
-               double angular_velocity, const Material& material) {
-  RigidBodyDesc desc;
-  desc.control_points = blob_control_points(radius, 0.4, 24, seed);
-  desc.material = material;
-  desc.position = centre;
-  desc.velocity = velocity;
-  desc.angular_velocity = angular_velocity;
-  RigidBody body(desc);
-  return body;
-}
-
-// A fixed w x h slab whose top face lies at y = top; straight segments (a sharp box).
-RigidBody floor_block(double width, double height, double top, const Material& material,
-                      double sigma = 0.0) {
-  RigidBodyDesc desc;
-  desc.control_points = box_control_points(width, height, 32);
-  desc.sigma.assign(32, sigma);
-  desc.material = material;
-  desc.fixed = true;
-  desc.position = Vec2(0.0, top - 0.5 * height);
-  return RigidBody(desc);
-}
-
-PairState pair_state(const World& world, std::size_t a, std::size_t b) {
-  std::vector<PlacedShape> placed;
-  for (std::size_t i = 0; i < world.body_count(); ++i) {
-    placed.push_back(
-        {&world.body(i).shape(), world.body(i).placement(), world.body(i).fixed(), false});
-  }
-  CollisionPipeline pipeline;
-  for (const ContactManifold& m : pipeline.detect(placed)) {
-    if (m.body_a == std::min(a, b) && m.body_b == std::max(a, b)) return m.state();
-  }
-  return PairState::kSeparated;
-}
 
 // A disk of radius 0.25 m (64 segments, σ = 0) dropped from 0.75 m onto a fixed floor, μ = 0,
 // ε = ε_max = 0.5. Bands: only the minimum bands (1e-6 of each body's size: about 0.7 µm for
