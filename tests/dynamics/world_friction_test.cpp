@@ -85,8 +85,9 @@ struct InclineRun {
 
 // A 0.4 x 0.2 m block (ε = 0, ε_max = 0.3) released at rest in the middle of the band, under
 // gravity tilted by θ, sampled every ms for `duration` s.
-InclineRun run_incline(double theta, double duration) {
+InclineRun run_incline(double theta, double duration, double max_step) {
   WorldSettings settings;
+  settings.max_step = max_step;
   settings.gravity = tilted_gravity(kG, theta);
   settings.friction_gain = kGain;
   settings.record_events = false;
@@ -111,6 +112,15 @@ InclineRun run_incline(double theta, double duration) {
   run.fallbacks = world.stats().fallbacks;
   return run;
 }
+
+// Each test runs at several accuracy settings: the longest internal step at 4 ms (coarse),
+// 1 ms (the default) and 0.25 ms (fine).
+class FrictionAtStep : public ::testing::TestWithParam<double> {};
+
+INSTANTIATE_TEST_SUITE_P(MaxStep, FrictionAtStep, ::testing::Values(4e-3, 1e-3, 2.5e-4),
+                         [](const ::testing::TestParamInfo<double>& step) {
+                           return std::to_string(static_cast<int>(step.param * 1e6)) + "us";
+                         });
 
 // Index of the sample at time t (s).
 std::size_t sample_at(double t) {
@@ -141,25 +151,25 @@ double fit_acceleration(const InclineRun& run, double t0, double t1) {
 }
 
 // Below the friction angle (tan θ = 0.3 < μ = 0.5) the block stays. Friction acts only in the
-// micro-collisions at the ends of the steps: between two of them (n steps of h = max_step =
-// 1 ms) the block is in free flight and gains g·sinθ·n·h along the slope, which the next
-// micro-collision takes back (it sticks). That leaves a creep of ½·g·sinθ·n·h per second:
-// 1.41 mm/s for n = 1, 2.82 mm/s for n = 2. Which regime settles depends chaotically on the
-// release: over [0.2, 1.2] s this configuration measured 2.818 mm, and the same block released
-// at other depths of the band 1.409 to 2.864 mm; the release (a first micro-collision kicks
-// the block up and it flies about 20 ms without friction) adds 0.3 to 2.4 mm more, the
-// largest displacement seen was 5.6 mm and the largest settled speed 4.1 mm/s. Frictionless,
-// the block would slide ½·g·sinθ·(1 s)² = 1.41 m. Bounds: 4 mm over the settled second, 8 mm
-// in all, |v| < 1 cm/s at the end.
-TEST(WorldFriction, BlockStaysOnInclineBelowFrictionAngle) {
+// micro-collisions at the ends of the steps: between two of them (n steps of h = max_step) the
+// block is in free flight and gains g·sinθ·n·h along the slope, which the next micro-collision
+// takes back (it sticks). Left awake, that creep is ½·g·sinθ·n·h per second (1.41 mm/s for
+// n = 1 at 1 ms; measured 2.8 mm over [0.2, 1.2] s before sleeping existed). Sleeping ends it:
+// the creep is slow enough to count as still (sleep_tracker.h), and after two still windows
+// the block sleeps where it is. Measured: 1.9 to 2.0 mm in all (most of it the release: a
+// first micro-collision kicks the block up and it flies about 20 ms without friction), 0.14,
+// 0.16 and 0.28 mm over [0.2, 1.2] s at 4, 1 and 0.25 ms, asleep at the end. Frictionless,
+// the block would slide ½·g·sinθ·(1 s)² = 1.41 m. Bounds: 4 mm over [0.2, 1.2] s, 8 mm in
+// all, |v| < 1 cm/s at the end.
+TEST_P(FrictionAtStep, BlockStaysOnInclineBelowFrictionAngle) {
   const double theta = std::atan(0.3);
-  const InclineRun run = run_incline(theta, 1.2);
+  const InclineRun run = run_incline(theta, 1.2, GetParam());
   const double settled_creep = run.s[sample_at(1.2)] - run.s[sample_at(0.2)];
   double worst = 0.0;
   for (double s : run.s)
     worst = std::max(worst, std::abs(s));
   // One step of free flight between micro-collisions (n = 1), over 1 s.
-  const double creep_predicted = 0.5 * kG * std::sin(theta) * WorldSettings{}.max_step * 1.0;
+  const double creep_predicted = 0.5 * kG * std::sin(theta) * GetParam() * 1.0;
   RecordProperty("settled_creep_over_1s", scientific(settled_creep, 6));
   RecordProperty("settled_creep_predicted", scientific(creep_predicted, 6));
   RecordProperty("release_displacement_at_0.2s", scientific(run.s[sample_at(0.2)], 6));
@@ -176,11 +186,11 @@ TEST(WorldFriction, BlockStaysOnInclineBelowFrictionAngle) {
 // a = g·(sinθ − μ·cosθ) = 1.6073 m/s². The release transient (the first micro-collision comes
 // with almost no friction, then ~20 ms of free flight) leaves the block about 0.065 m/s ahead
 // of a = const from rest: a fit of ½·a·t² through the origin over [0, 0.5] s gives 1.97 m/s²
-// (+23%), while a fit of s0 + v0·u + ½·a·u² over [0.1, 0.6] s gives 1.607343 m/s² (6e-6).
-// Tolerance 1%.
-TEST(WorldFriction, BlockSlidesDownInclineAboveFrictionAngle) {
+// (+23%), while a fit of s0 + v0·u + ½·a·u² over [0.1, 0.6] s gives 1.607372, 1.607360 and 1.607398
+// m/s² at 4, 1 and 0.25 ms (2.4e-5, 1.7e-5, 4.0e-5). Tolerance 1%.
+TEST_P(FrictionAtStep, BlockSlidesDownInclineAboveFrictionAngle) {
   const double theta = std::atan(0.7);
-  const InclineRun run = run_incline(theta, 0.6);
+  const InclineRun run = run_incline(theta, 0.6, GetParam());
   const double a_expected = kG * (std::sin(theta) - kMu * std::cos(theta));
   const double a_fit = fit_acceleration(run, 0.1, 0.6);
   const double rel = std::abs(a_fit - a_expected) / a_expected;
@@ -200,11 +210,12 @@ TEST(WorldFriction, BlockSlidesDownInclineAboveFrictionAngle) {
 // d_front in [d, d + w] from x_p, d = v0²/(2·g·μ_patch) = 0.917 m, w = 0.4 m being the block's
 // length (partial overlap while it enters), widened by one segment length ℓ = 5 cm either side
 // (λ is a cubic through the segments' midpoints, so it rises over about ℓ around x_p).
-// Measured: v before the patch 2.99993 m/s, front edge stopped 1.085 m past x_p, speed at
-// the end 8e-3 m/s (micro-collision jitter). Band [0.865, 1.369] m. The 1.085 m matches a
+// Measured (4, 1, 0.25 ms): v before the patch 2.99997, 2.99998, 2.99985 m/s, front edge
+// stopped 1.0848, 1.0850, 1.0848 m past x_p, asleep at the end (awake, micro-collision jitter
+// would leave it at about 8e-3 m/s). Band [0.865, 1.369] m. The 1.085 m matches a
 // corner-load model: while only the front corner is on the patch it carries 1/(2 − μh/w)
 // = 0.571 of the weight, predicting 1.089 m.
-TEST(WorldFriction, RoughPatchStopsSlidingBlock) {
+TEST_P(FrictionAtStep, RoughPatchStopsSlidingBlock) {
   const double v0 = 3.0;
   const double x_p = 0.0;
   const double patch_end = 2.5;
@@ -215,6 +226,7 @@ TEST(WorldFriction, RoughPatchStopsSlidingBlock) {
   const double floor_width = 6.0;
   const std::size_t floor_segments = 256;
   WorldSettings settings;
+  settings.max_step = GetParam();
   settings.friction_gain = k;
   settings.record_events = false;
   World world(settings);
