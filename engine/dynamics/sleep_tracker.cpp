@@ -32,12 +32,13 @@ void unite(std::vector<std::size_t>& parent, std::size_t a, std::size_t b) {
 
 }  // namespace
 
-void SleepTracker::track(std::span<const RigidBody> bodies) {
+void SleepTracker::track(std::span<const RigidBody> bodies, double time) {
   for (std::size_t i = asleep_.size(); i < bodies.size(); ++i) {
     asleep_.push_back(0);
     island_.push_back(i);
     anchor_position_.push_back(bodies[i].state().position);
     anchor_angle_.push_back(bodies[i].state().angle);
+    anchor_time_.push_back(time);
     still_windows_.push_back(0);
     band_seen_.push_back(0.0);
   }
@@ -54,28 +55,29 @@ bool SleepTracker::any_awake_mover(std::span<const RigidBody> bodies) const {
   return false;
 }
 
-void SleepTracker::anchor(const RigidBody& body, std::size_t i) {
+void SleepTracker::anchor(const RigidBody& body, std::size_t i, double time) {
   anchor_position_[i] = body.state().position;
   anchor_angle_[i] = body.state().angle;
+  anchor_time_[i] = time;
   band_seen_[i] = 0.0;
 }
 
-void SleepTracker::wake_island(std::span<const RigidBody> bodies, std::size_t island) {
+void SleepTracker::wake_island(std::span<const RigidBody> bodies, std::size_t island, double time) {
   for (std::size_t i = 0; i < asleep_.size(); ++i) {
     if (asleep_[i] == 0 || island_[i] != island) continue;
     asleep_[i] = 0;
     island_[i] = i;
     still_windows_[i] = 0;
-    anchor(bodies[i], i);
+    anchor(bodies[i], i, time);
   }
 }
 
-void SleepTracker::wake(std::span<const RigidBody> bodies, std::size_t body) {
-  if (asleep(body)) wake_island(bodies, island_[body]);
+void SleepTracker::wake(std::span<const RigidBody> bodies, std::size_t body, double time) {
+  if (asleep(body)) wake_island(bodies, island_[body], time);
 }
 
 std::uint64_t SleepTracker::wake_touched(std::span<const RigidBody> bodies,
-                                         std::span<const ContactManifold> manifolds) {
+                                         std::span<const ContactManifold> manifolds, double time) {
   std::uint64_t woken = 0;
   for (const ContactManifold& m : manifolds) {
     if (!touching(m)) continue;
@@ -84,10 +86,10 @@ std::uint64_t SleepTracker::wake_touched(std::span<const RigidBody> bodies,
     const bool a_awake_mover = !bodies[a].fixed() && !asleep(a);
     const bool b_awake_mover = !bodies[b].fixed() && !asleep(b);
     if (asleep(a) && b_awake_mover) {
-      wake_island(bodies, island_[a]);
+      wake_island(bodies, island_[a], time);
       ++woken;
     } else if (asleep(b) && a_awake_mover) {
-      wake_island(bodies, island_[b]);
+      wake_island(bodies, island_[b], time);
       ++woken;
     }
   }
@@ -109,9 +111,13 @@ std::uint64_t SleepTracker::update(std::span<RigidBody> bodies,
     }
   }
   if (time < next_check_) return 0;
-  next_check_ = time + 0.5 * settings_.time;
+  const double window = 0.5 * settings_.time;
+  next_check_ = time + window;
   for (std::size_t i = 0; i < n; ++i) {
     if (bodies[i].fixed() || asleep(i)) continue;
+    // A window shorter than the others (the body was added or woken since the last check)
+    // proves little: it is judged at a later check, from the same anchor.
+    if (time - anchor_time_[i] < window) continue;
     const BodyState& s = bodies[i].state();
     const double radius = bodies[i].bounding_radius();
     const double d = settings_.bands * band_seen_[i] + settings_.tolerance * radius;
@@ -119,7 +125,7 @@ std::uint64_t SleepTracker::update(std::span<RigidBody> bodies,
     const double turned = std::abs(s.angle - anchor_angle_[i]) * radius;
     const bool still = std::abs(moved.x()) <= d && std::abs(moved.y()) <= d && turned <= d;
     still_windows_[i] = still ? still_windows_[i] + 1 : 0;
-    anchor(bodies[i], i);
+    anchor(bodies[i], i, time);
   }
 
   parent_.resize(n);

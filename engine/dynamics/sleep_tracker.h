@@ -59,7 +59,7 @@ class SleepTracker {
   const SleepSettings& settings() const { return settings_; }
 
   // Grows the per-body records to `bodies` (new bodies start awake, anchored where they are).
-  void track(std::span<const RigidBody> bodies);
+  void track(std::span<const RigidBody> bodies, double time);
 
   bool asleep(std::size_t body) const { return body < asleep_.size() && asleep_[body] != 0; }
   std::size_t asleep_count() const;
@@ -69,10 +69,10 @@ class SleepTracker {
   // Wakes the island of every sleeping body that touches or crosses an awake movable body in
   // `manifolds`; returns how many islands woke.
   std::uint64_t wake_touched(std::span<const RigidBody> bodies,
-                             std::span<const ContactManifold> manifolds);
+                             std::span<const ContactManifold> manifolds, double time);
 
   // Wakes body i's island (e.g. when the caller changes its state); no-op when awake.
-  void wake(std::span<const RigidBody> bodies, std::size_t body);
+  void wake(std::span<const RigidBody> bodies, std::size_t body, double time);
 
   // After the impulses of an accepted state at `time` (s): notes the widest contact bands and,
   // when a check is due, judges each awake body's window and puts to sleep every island whose
@@ -83,8 +83,8 @@ class SleepTracker {
                        std::span<const BodyPair> near_pairs, double time);
 
  private:
-  void anchor(const RigidBody& body, std::size_t i);
-  void wake_island(std::span<const RigidBody> bodies, std::size_t island);
+  void anchor(const RigidBody& body, std::size_t i, double time);
+  void wake_island(std::span<const RigidBody> bodies, std::size_t island, double time);
 
   SleepSettings settings_;
   // Per body; uint8_t rather than vector<bool> for plain indexing.
@@ -92,6 +92,7 @@ class SleepTracker {
   std::vector<std::size_t> island_;     // while asleep: the island's smallest body index
   std::vector<Vec2> anchor_position_;   // m
   std::vector<double> anchor_angle_;    // rad
+  std::vector<double> anchor_time_;     // s
   std::vector<int> still_windows_;      // still windows in a row, up to now
   double next_check_ = 0.0;             // s: world time of the next check
   std::vector<double> band_seen_;       // m, widest contact band in the current window

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "engine/dynamics/contact_resolution.h"
@@ -61,36 +62,47 @@ World::World(WorldSettings settings) : settings_(std::move(settings)), sleep_(se
 std::size_t World::add_body(RigidBody body, std::string name) {
   bodies_.push_back(std::move(body));
   names_.push_back(std::move(name));
-  sleep_.track(bodies_);
+  sleep_.track(bodies_, time_);
   return bodies_.size() - 1;
 }
 
-void World::place_at(double dt) {
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (bodies_[i].fixed() || sleep_.asleep(i)) continue;
-    bodies_[i].set_state(free_flight(start_[i], settings_.gravity, dt));
-  }
+void World::set_members(std::vector<std::size_t> members) {
+  for (const std::size_t i : members_)
+    moving_[i] = 0;
+  members_ = std::move(members);
+  for (const std::size_t i : members_)
+    moving_[i] = 1;
 }
 
-const std::vector<ContactManifold>& World::detect() {
+void World::save_start() {
+  for (const std::size_t i : members_)
+    start_[i] = bodies_[i].state();
+}
+
+void World::place_at(double dt) {
+  for (const std::size_t i : members_)
+    bodies_[i].set_state(free_flight(start_[i], settings_.gravity, dt));
+}
+
+void World::detect() {
   placed_.resize(bodies_.size());
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     placed_[i].shape = &bodies_[i].shape();
     placed_[i].placement = bodies_[i].placement();
     placed_[i].fixed = bodies_[i].fixed();
-    placed_[i].asleep = sleep_.asleep(i);
+    // A body that does not move in this sub-step is tested only against bodies that do, as
+    // the broad phase treats sleeping bodies.
+    placed_[i].asleep = !bodies_[i].fixed() && moving_[i] == 0;
   }
   detected_ = pipeline_.detect(placed_);
   detected_pairs_ = pipeline_.near_pairs();
-  return detected_;
 }
 
-double World::back_off(double h) {
+double World::back_off(double dt_full) {
   double lo = 0.0;
-  double hi = h;
+  double hi = dt_full;
   std::vector<BodyPairKey> pairs = crossing_pairs(detected_);
-  std::vector<ContactManifold> lo_manifolds;
-  std::vector<BodyPair> lo_pairs;
+  bool have_lo = false;
   for (int i = 0; i < settings_.max_bisections && hi - lo > settings_.min_step; ++i) {
     const double mid = lo + 0.5 * (hi - lo);
     place_at(mid);
@@ -102,69 +114,178 @@ double World::back_off(double h) {
       continue;
     }
     lo = mid;
-    lo_manifolds = detected_;
-    lo_pairs = detected_pairs_;
+    accepted_ = detected_;
+    accepted_pairs_ = detected_pairs_;
+    have_lo = true;
     if (touches_crossing_pair(detected_, pairs)) {
       consecutive_fallbacks_ = 0;
-      manifolds_ = std::move(lo_manifolds);
-      near_pairs_ = std::move(lo_pairs);
       return mid;
     }
   }
-  if (lo > 0.0) {
-    // No contact caught yet, but progress: the gap closes on a later step.
+  if (have_lo) {
+    // No contact caught yet, but progress: the gap closes on a later sub-step.
     place_at(lo);
     consecutive_fallbacks_ = 0;
-    manifolds_ = std::move(lo_manifolds);
-    near_pairs_ = std::move(lo_pairs);
     return lo;
   }
   ++stats_.fallbacks;
   if (++consecutive_fallbacks_ > kMaxConsecutiveFallbacks) {
-    // Stopping the bodies did not help: accept the whole trial step, crossing, so that time
-    // moves on at the normal pace (accepting only min_step would crawl).
-    place_at(h);
+    // Stopping the bodies did not help: accept the whole move, crossing, so that time moves
+    // on at the normal pace (accepting only min_step would crawl).
+    place_at(dt_full);
     ++stats_.crossing_fallbacks;
     consecutive_fallbacks_ = 0;
-    manifolds_ = detect();
-    near_pairs_ = detected_pairs_;
-    return h;
+    detect();
+    accepted_ = detected_;
+    accepted_pairs_ = detected_pairs_;
+    return dt_full;
   }
-  // Even min_step crosses: stop the bodies that would cross, and stay where we are.
+  // Even min_step crosses: stop the members that would cross, and stay where we are.
   ++stats_.min_step_fallbacks;
   place_at(0.0);
   for (const BodyPairKey& pair : pairs) {
     for (const std::size_t i : {pair.first, pair.second}) {
-      if (bodies_[i].fixed()) continue;
+      if (bodies_[i].fixed() || moving_[i] == 0) continue;
       BodyState s = bodies_[i].state();
       s.velocity = Vec2::Zero();
       s.angular_velocity = 0.0;
       bodies_[i].set_state(s);
     }
   }
-  manifolds_ = detect();
-  near_pairs_ = detected_pairs_;
+  detect();
+  accepted_ = detected_;
+  accepted_pairs_ = detected_pairs_;
   return 0.0;
 }
 
-double World::step(double h) {
-  start_.resize(bodies_.size());
-  for (std::size_t i = 0; i < bodies_.size(); ++i)
-    start_[i] = bodies_[i].state();
+void World::resolve(const std::vector<ContactManifold>& manifolds, double time) {
+  const ResolutionSettings resolution{settings_.gravity, settings_.friction_gain,
+                                      settings_.max_resolution_passes, settings_.max_step};
+  ++stats_.steps;
+  if (any_crossing(manifolds)) ++stats_.crossings;
+  stats_.islands_woken += sleep_.wake_touched(bodies_, manifolds, time);
+  const ResolutionCounts counts = resolve_contacts(bodies_, manifolds, resolution, time,
+                                                   settings_.record_events ? &events_ : nullptr);
+  stats_.collisions += counts.collisions;
+  stats_.contacts += counts.contacts;
+  stats_.passes += counts.passes;
+  if (counts.passes_exhausted) {
+    ++stats_.pass_fallbacks;
+    ++stats_.fallbacks;
+  }
+  stats_.rigid_clusters += counts.rigid_clusters;
+  if (counts.still_approaching) ++stats_.unresolved_states;
+}
+
+void World::advance_crossing_members(double h) {
+  double local = 0.0;         // s after time_ reached by the members
+  bool trial_crosses = true;  // the caller found the move to h crossing
+  while (local < h) {
+    const double dt_full = h - local;
+    if (!trial_crosses) {
+      save_start();
+      place_at(dt_full);
+      detect();
+      if (!any_crossing(detected_)) {
+        accepted_ = detected_;
+        accepted_pairs_ = detected_pairs_;
+        consecutive_fallbacks_ = 0;
+        resolve(accepted_, time_ + h);
+        return;
+      }
+    }
+    trial_crosses = false;
+    const double dt = back_off(dt_full);
+    local = dt == dt_full ? h : local + dt;
+    resolve(accepted_, time_ + local);
+  }
+}
+
+void World::step(double h) {
+  std::vector<std::size_t> movers;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (!bodies_[i].fixed() && !sleep_.asleep(i)) movers.push_back(i);
+  }
+  set_members(std::move(movers));
+  save_start();
   place_at(h);
   detect();
   if (!any_crossing(detected_)) {
+    consecutive_fallbacks_ = 0;
     manifolds_ = detected_;
     near_pairs_ = detected_pairs_;
-    consecutive_fallbacks_ = 0;
-    return h;
+    resolve(manifolds_, time_ + h);
+    return;
   }
-  return back_off(h);
+
+  // Islands of the trial: movers linked by near pairs. Those holding a crossing back off
+  // alone; the rest keep the whole step (DESIGN.md: a collision in one pile must not shorten
+  // every other body's step).
+  std::vector<std::size_t> parent(bodies_.size());
+  for (std::size_t i = 0; i < parent.size(); ++i)
+    parent[i] = i;
+  auto root = [&](std::size_t i) {
+    while (parent[i] != i) {
+      parent[i] = parent[parent[i]];
+      i = parent[i];
+    }
+    return i;
+  };
+  for (const BodyPair& pair : detected_pairs_) {
+    if (moving_[pair.a] == 0 || moving_[pair.b] == 0) continue;
+    const std::size_t ra = root(pair.a), rb = root(pair.b);
+    parent[std::max(ra, rb)] = std::min(ra, rb);
+  }
+  std::vector<std::uint8_t> crossing_root(bodies_.size(), 0);
+  for (const ContactManifold& m : detected_) {
+    if (m.state() != PairState::kIntersecting) continue;
+    if (moving_[m.body_a] != 0) crossing_root[root(m.body_a)] = 1;
+    if (moving_[m.body_b] != 0) crossing_root[root(m.body_b)] = 1;
+  }
+  std::vector<std::size_t> crossing_members;
+  std::vector<std::uint8_t> in_crossing(bodies_.size(), 0);
+  for (const std::size_t i : members_) {
+    if (crossing_root[root(i)] != 0) {
+      crossing_members.push_back(i);
+      in_crossing[i] = 1;
+    }
+  }
+  // The other islands are accepted at h, with the manifolds and pairs that do not involve a
+  // crossing island (those are found again as the crossing islands move).
+  std::vector<ContactManifold> outside;
+  for (const ContactManifold& m : detected_) {
+    if (in_crossing[m.body_a] == 0 && in_crossing[m.body_b] == 0) outside.push_back(m);
+  }
+  std::vector<BodyPair> outside_pairs;
+  for (const BodyPair& pair : detected_pairs_) {
+    if (in_crossing[pair.a] == 0 && in_crossing[pair.b] == 0) outside_pairs.push_back(pair);
+  }
+  if (crossing_members.size() < members_.size()) resolve(outside, time_ + h);
+
+  set_members(std::move(crossing_members));
+  advance_crossing_members(h);
+
+  // The state at the end of the step: both sets of manifolds, in the pipeline's order.
+  manifolds_ = std::move(outside);
+  for (const ContactManifold& m : accepted_) {
+    if (in_crossing[m.body_a] != 0 || in_crossing[m.body_b] != 0) manifolds_.push_back(m);
+  }
+  std::sort(manifolds_.begin(), manifolds_.end(),
+            [](const ContactManifold& x, const ContactManifold& y) {
+              return std::tie(x.body_a, x.body_b) < std::tie(y.body_a, y.body_b);
+            });
+  near_pairs_ = std::move(outside_pairs);
+  for (const BodyPair& pair : accepted_pairs_) {
+    if (in_crossing[pair.a] != 0 || in_crossing[pair.b] != 0) near_pairs_.push_back(pair);
+  }
+  std::sort(near_pairs_.begin(), near_pairs_.end(), [](const BodyPair& x, const BodyPair& y) {
+    return std::tie(x.a, x.b) < std::tie(y.a, y.b);
+  });
 }
 
 void World::advance_to(double t) {
-  const ResolutionSettings resolution{settings_.gravity, settings_.friction_gain,
-                                      settings_.max_resolution_passes, settings_.max_step};
+  moving_.resize(bodies_.size(), 0);
+  start_.resize(bodies_.size());
   while (time_ < t) {
     if (!sleep_.any_awake_mover(bodies_)) {
       // Nothing can move until something is woken from outside: no steps to take.
@@ -174,23 +295,9 @@ void World::advance_to(double t) {
     }
     const double remaining = t - time_;
     const double h = std::min(settings_.max_step, remaining);
-    const double dt = step(h);
+    step(h);
     // Land exactly on t rather than a rounding short of it.
-    time_ = dt == remaining ? t : time_ + dt;
-    ++stats_.steps;
-    if (any_crossing(manifolds_)) ++stats_.crossings;
-    stats_.islands_woken += sleep_.wake_touched(bodies_, manifolds_);
-    const ResolutionCounts counts = resolve_contacts(bodies_, manifolds_, resolution, time_,
-                                                     settings_.record_events ? &events_ : nullptr);
-    stats_.collisions += counts.collisions;
-    stats_.contacts += counts.contacts;
-    stats_.passes += counts.passes;
-    if (counts.passes_exhausted) {
-      ++stats_.pass_fallbacks;
-      ++stats_.fallbacks;
-    }
-    stats_.rigid_clusters += counts.rigid_clusters;
-    if (counts.still_approaching) ++stats_.unresolved_states;
+    time_ = h == remaining ? t : time_ + h;
     stats_.islands_slept += sleep_.update(bodies_, manifolds_, near_pairs_, time_);
   }
   stats_.sim_time = time_;

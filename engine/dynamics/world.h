@@ -2,32 +2,38 @@
 // resolved by impulses (paper §4; DESIGN.md, "Dynamics").
 //
 // One internal step of size h (at most max_step, and never past the target time):
-//  1. Every movable body is moved from its state at the step's start by exact free flight
-//     (free_flight.h), and collision detection runs on the trial state.
-//  2. If a pair crosses, the step is rejected and bisected on [lo, hi] = [0, h]: a trial that
+//  1. Every awake movable body is moved from its state at the step's start by exact free
+//     flight (free_flight.h), and collision detection runs on the trial state. Without a
+//     crossing, the state is accepted and its contacts get impulses (step 3).
+//  2. With a crossing, the trial's islands (awake movable bodies linked by near pairs, i.e.
+//     overlapping boxes) are split: islands without a crossing keep the whole step and get
+//     their impulses at once; only the islands holding a crossing back off (DESIGN.md: a
+//     collision in one pile must not shorten every other body's step), the rest of the world
+//     held still where it is. Their move is bisected on [lo, hi] = [0, h]: a trial that
 //     crosses becomes hi, one that does not becomes lo. It stops, accepting the trial, as soon
 //     as a non-crossing trial has a tolerated contact on a pair that crosses at hi: the bodies
 //     are then within their band, never across it. Bisection is bounded by max_bisections and
 //     by hi − lo <= min_step; when it runs out without such a trial, the last lo is accepted
-//     if lo > 0 (the gap closes on a later step). If lo = 0 (even a step of min_step crosses),
-//     the fallback stops the movable bodies of the crossing pairs (v = 0, ω = 0) and accepts the
-//     unchanged state, counted in min_step_fallbacks; after kMaxConsecutiveFallbacks such
-//     fallbacks in a row the whole trial step h is accepted although it crosses, counted in
-//     crossing_fallbacks and crossings, so that time always moves on.
-//  3. Contacts of the accepted state get impulses (contact_resolution.h: collisions, and
-//     micro-collisions for resting contact; material mixing and gravity rules are there).
+//     if lo > 0 (the gap closes on a later sub-step). If lo = 0 (even a step of min_step
+//     crosses), the fallback stops the bodies of the crossing pairs (v = 0, ω = 0) and accepts
+//     the unchanged state, counted in min_step_fallbacks; after kMaxConsecutiveFallbacks such
+//     fallbacks in a row the whole remaining move is accepted although it crosses, counted in
+//     crossing_fallbacks and crossings, so that time always moves on. Each accepted sub-state
+//     gets its impulses, and the backed-off islands sub-step on until they too reach h.
+//  3. Contacts of an accepted state get impulses (contact_resolution.h: collisions, and
+//     micro-collisions for resting contact; material mixing, gravity rules and the rigid-
+//     cluster fallback are there). Sleeping islands touched by an awake body wake first.
+//  4. Sleeping (sleep_tracker.h): after the step, islands that have been still long enough
+//     fall asleep. Sleeping bodies are not moved and pairs of them with fixed or sleeping
+//     bodies are not tested; when nothing movable is awake, advance_to jumps straight to its
+//     target time.
 //
-// 4. Sleeping (sleep_tracker.h): sleeping islands touched by an awake body wake before the
-//    impulses; islands that have been still long enough fall asleep after them. Sleeping
-//    bodies are not moved and pairs of them with fixed or sleeping bodies are not tested;
-//    when nothing movable is awake, advance_to jumps straight to its target time.
-//
-// The whole world backs off together (not per island). Determinism: only ordered containers and a
-// fixed order of operations, so the same bodies and settings give bit-identical states, events and
-// stats.
+// Determinism: only ordered containers and a fixed order of operations, so the same bodies and
+// settings give bit-identical states, events and stats.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -79,7 +85,7 @@ class World {
   RigidBody& body(std::size_t i) { return bodies_[i]; }
   bool asleep(std::size_t i) const { return sleep_.asleep(i); }
   // Wakes body i and the rest of its sleeping island; no-op when it is awake.
-  void wake(std::size_t i) { sleep_.wake(bodies_, i); }
+  void wake(std::size_t i) { sleep_.wake(bodies_, i, time_); }
   const std::string& name(std::size_t i) const { return names_[i]; }
   const WorldSettings& settings() const { return settings_; }
 
@@ -97,26 +103,40 @@ class World {
   const std::vector<ContactManifold>& manifolds() const { return manifolds_; }
 
  private:
-  // Places every movable body at dt (s) of free flight from start_[i].
+  // Makes `members` (sorted body indices) the bodies that move in the current (sub-)step.
+  void set_members(std::vector<std::size_t> members);
+  // Saves the members' states as the start of a (sub-)step.
+  void save_start();
+  // Places every member at dt (s) of free flight from its start state.
   void place_at(double dt);
-  // Runs detection on the current placement; result in detected_.
-  const std::vector<ContactManifold>& detect();
-  // One internal step of at most h (s); returns the time actually advanced (may be 0).
-  double step(double h);
-  // Bisects a step of h whose end crosses; returns the accepted dt, leaves the bodies there
-  // and the accepted manifolds in manifolds_.
-  double back_off(double h);
+  // Runs detection on the current placement, every non-member held still; result in
+  // detected_ and detected_pairs_.
+  void detect();
+  // One step of exactly h (s) for every awake movable body (islands that cross back off alone).
+  void step(double h);
+  // Advances the members, whose full move to h (s after time_) was found to cross, by
+  // back-off and further sub-steps until they reach h.
+  void advance_crossing_members(double h);
+  // Bisects the members' move of dt_full (s) whose end crosses; returns the accepted dt (0 after
+  // a min-step fallback), leaves the members there and the manifolds in accepted_.
+  double back_off(double dt_full);
+  // Impulses for the manifolds of an accepted state at `time` (s), and the step statistics.
+  void resolve(const std::vector<ContactManifold>& manifolds, double time);
 
   WorldSettings settings_;
   std::vector<RigidBody> bodies_;
   std::vector<std::string> names_;
-  std::vector<BodyState> start_;  // states at the start of the current step
+  std::vector<std::size_t> members_;  // bodies moving in the current (sub-)step
+  std::vector<std::uint8_t> moving_;  // per body: 1 when a member
+  std::vector<BodyState> start_;      // per body: a member's state at the sub-step's start
   std::vector<PlacedShape> placed_;
   CollisionPipeline pipeline_;
   std::vector<ContactManifold> detected_;   // copy of the latest detection
-  std::vector<ContactManifold> manifolds_;  // of the accepted state
-  std::vector<BodyPair> detected_pairs_;    // broad-phase pairs of the latest detection
-  std::vector<BodyPair> near_pairs_;        // of the accepted state
+  std::vector<BodyPair> detected_pairs_;    // its broad-phase pairs
+  std::vector<ContactManifold> accepted_;   // of the state back_off accepted
+  std::vector<BodyPair> accepted_pairs_;    // its broad-phase pairs
+  std::vector<ContactManifold> manifolds_;  // of the state at the end of the last step
+  std::vector<BodyPair> near_pairs_;        // its broad-phase pairs
   std::vector<ContactEvent> events_;
   SleepTracker sleep_;
   StepStats stats_;
