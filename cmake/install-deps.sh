@@ -16,6 +16,8 @@ packages=(
   libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
+  # the pile benchmark's competitor
+  libbox2d-dev
 )
 
 missing=()
