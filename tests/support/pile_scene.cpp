@@ -47,14 +47,14 @@ std::vector<PileBody> pile_scene(const PileSpec& spec) {
   const double wall_height = static_cast<double>(rows + 2) * pitch;
 
   std::vector<PileBody> scene;
-  scene.push_back({wall(spec, width + 2.0 * thickness, thickness, Vec2(0.0, -0.5 * thickness)),
-                   "floor"});
-  scene.push_back({wall(spec, thickness, wall_height,
-                        Vec2(-0.5 * (width + thickness), 0.5 * wall_height)),
-                   "left_wall"});
-  scene.push_back({wall(spec, thickness, wall_height,
-                        Vec2(0.5 * (width + thickness), 0.5 * wall_height)),
-                   "right_wall"});
+  scene.push_back(
+      {wall(spec, width + 2.0 * thickness, thickness, Vec2(0.0, -0.5 * thickness)), "floor"});
+  scene.push_back(
+      {wall(spec, thickness, wall_height, Vec2(-0.5 * (width + thickness), 0.5 * wall_height)),
+       "left_wall"});
+  scene.push_back(
+      {wall(spec, thickness, wall_height, Vec2(0.5 * (width + thickness), 0.5 * wall_height)),
+       "right_wall"});
 
   Rng rng(spec.seed);
   for (std::size_t i = 0; i < spec.bodies; ++i) {

@@ -15,12 +15,12 @@ namespace rugosim::testing {
 
 struct PileSpec {
   std::size_t bodies = 20;
-  std::size_t segments = 24;     // B-spline segments per falling body
-  double radius = 0.1;           // m, mean radius of a body
-  double irregularity = 0.4;     // blob irregularity (shapes.h), concave outlines included
-  double spacing = 3.0;          // grid pitch in radii: > 2(1 + irregularity), so bodies start apart
-  double sigma = 0.003;          // m, rugosity of every segment (falling bodies and the box)
-  double restitution = 0.3;      // ε
+  std::size_t segments = 24;  // B-spline segments per falling body
+  double radius = 0.1;        // m, mean radius of a body
+  double irregularity = 0.4;  // blob irregularity (shapes.h), concave outlines included
+  double spacing = 3.0;       // grid pitch in radii: > 2(1 + irregularity), so bodies start apart
+  double sigma = 0.003;       // m, rugosity of every segment (falling bodies and the box)
+  double restitution = 0.3;   // ε
   double restitution_max = 0.5;  // ε_max
   double density = 1000.0;       // kg/m²
   std::uint64_t seed = 1;

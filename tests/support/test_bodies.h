@@ -14,8 +14,8 @@
 namespace rugosim::testing {
 
 // A B-spline disk of the given radius (m) centred at `centre`, σ on every segment.
-inline RigidBody disk(double radius, std::size_t segments, const Vec2& centre,
-                      const Vec2& velocity, const Material& material, double sigma = 0.0) {
+inline RigidBody disk(double radius, std::size_t segments, const Vec2& centre, const Vec2& velocity,
+                      const Material& material, double sigma = 0.0) {
   RigidBodyDesc desc;
   desc.control_points = circle_control_points(radius, segments);
   desc.sigma.assign(segments, sigma);
