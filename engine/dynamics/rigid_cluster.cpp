@@ -3,20 +3,13 @@
 #include <algorithm>
 #include <cstddef>
 
+#include "engine/core/disjoint_sets.h"
 #include "engine/dynamics/collision_impulse.h"
 #include "engine/dynamics/contact_plan.h"
 #include "engine/dynamics/contact_resolution.h"
 
 namespace rugosim {
 namespace {
-
-std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
 
 // A cluster moving as one rigid body.
 struct Composite {
@@ -69,21 +62,18 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
                                      std::vector<ContactEvent>* events) {
   ClusterCounts counts;
   const std::size_t n = bodies.size();
-  std::vector<std::size_t> parent(n);
-  for (std::size_t i = 0; i < n; ++i)
-    parent[i] = i;
+  DisjointSets clusters;
+  clusters.reset(n);
   for (const ContactManifold& m : manifolds) {
     if (m.contacts.empty() || bodies[m.body_a].fixed() || bodies[m.body_b].fixed()) continue;
-    const std::size_t ra = find_root(parent, m.body_a);
-    const std::size_t rb = find_root(parent, m.body_b);
-    parent[std::max(ra, rb)] = std::min(ra, rb);
+    clusters.unite(m.body_a, m.body_b);
   }
   std::vector<std::uint8_t> marked(n, 0);
   for (const ContactManifold& m : manifolds) {
     for (const Contact& c : m.contacts) {
       if (!plan_contact(bodies[m.body_a], bodies[m.body_b], c, settings).approaching) continue;
-      if (!bodies[m.body_a].fixed()) marked[find_root(parent, m.body_a)] = 1;
-      if (!bodies[m.body_b].fixed()) marked[find_root(parent, m.body_b)] = 1;
+      if (!bodies[m.body_a].fixed()) marked[clusters.root(m.body_a)] = 1;
+      if (!bodies[m.body_b].fixed()) marked[clusters.root(m.body_b)] = 1;
     }
   }
 
@@ -98,7 +88,7 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
     if (marked[root] == 0) continue;
     members.clear();
     for (std::size_t i = 0; i < n; ++i) {
-      if (!bodies[i].fixed() && find_root(parent, i) == root) members.push_back(i);
+      if (!bodies[i].fixed() && clusters.root(i) == root) members.push_back(i);
     }
     Composite composite = make_composite(bodies, members);
     ++counts.clusters;
@@ -106,8 +96,8 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
     fixed_contacts.clear();
     for (std::size_t k = 0; k < manifolds.size(); ++k) {
       const ContactManifold& m = manifolds[k];
-      const bool a_in = !bodies[m.body_a].fixed() && find_root(parent, m.body_a) == root;
-      const bool b_in = !bodies[m.body_b].fixed() && find_root(parent, m.body_b) == root;
+      const bool a_in = !bodies[m.body_a].fixed() && clusters.root(m.body_a) == root;
+      const bool b_in = !bodies[m.body_b].fixed() && clusters.root(m.body_b) == root;
       if (a_in == b_in) continue;  // inside the cluster, or not touching it
       for (std::size_t c = 0; c < m.contacts.size(); ++c)
         fixed_contacts.push_back({k, c, a_in});

@@ -10,26 +10,6 @@ bool touching(const ContactManifold& m) {
   return m.state() != PairState::kSeparated;
 }
 
-std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i) {
-  while (parent[i] != i) {
-    parent[i] = parent[parent[i]];  // path halving
-    i = parent[i];
-  }
-  return i;
-}
-
-// Union by smaller index, so every island's root is its smallest body index: deterministic,
-// and the island id stored while asleep.
-void unite(std::vector<std::size_t>& parent, std::size_t a, std::size_t b) {
-  const std::size_t ra = find_root(parent, a);
-  const std::size_t rb = find_root(parent, b);
-  if (ra < rb) {
-    parent[rb] = ra;
-  } else if (rb < ra) {
-    parent[ra] = rb;
-  }
-}
-
 }  // namespace
 
 void SleepTracker::track(std::span<const RigidBody> bodies, double time) {
@@ -128,25 +108,23 @@ std::uint64_t SleepTracker::update(std::span<RigidBody> bodies,
     anchor(bodies[i], i, time);
   }
 
-  parent_.resize(n);
-  for (std::size_t i = 0; i < n; ++i)
-    parent_[i] = i;
+  islands_.reset(n);
   for (const BodyPair& pair : near_pairs) {
     if (bodies[pair.a].fixed() || bodies[pair.b].fixed() || asleep(pair.a) || asleep(pair.b)) {
       continue;
     }
-    unite(parent_, pair.a, pair.b);
+    islands_.unite(pair.a, pair.b);
   }
   // An island sleeps when none of its bodies is restless: each had two still windows in a row.
   restless_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     if (bodies[i].fixed() || asleep(i)) continue;
-    if (still_windows_[i] < 2) restless_[find_root(parent_, i)] = 1;
+    if (still_windows_[i] < 2) restless_[islands_.root(i)] = 1;
   }
   std::uint64_t slept = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (bodies[i].fixed() || asleep(i)) continue;
-    const std::size_t root = find_root(parent_, i);
+    const std::size_t root = islands_.root(i);
     if (restless_[root] != 0) continue;
     if (root == i) ++slept;
     asleep_[i] = 1;

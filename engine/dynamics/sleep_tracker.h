@@ -28,6 +28,7 @@
 
 #include "engine/collision/broad_phase.h"
 #include "engine/collision/contact.h"
+#include "engine/core/disjoint_sets.h"
 #include "engine/core/types.h"
 #include "engine/dynamics/rigid_body.h"
 
@@ -96,7 +97,7 @@ class SleepTracker {
   std::vector<int> still_windows_;      // still windows in a row, up to now
   double next_check_ = 0.0;             // s: world time of the next check
   std::vector<double> band_seen_;       // m, widest contact band in the current window
-  std::vector<std::size_t> parent_;     // union-find scratch, reused between updates
+  DisjointSets islands_;                // scratch of update(), reused
   std::vector<std::uint8_t> restless_;  // per island root: scratch of update()
 };
 

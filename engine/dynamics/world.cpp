@@ -6,6 +6,7 @@
 #include <tuple>
 #include <utility>
 
+#include "engine/core/disjoint_sets.h"
 #include "engine/dynamics/contact_resolution.h"
 #include "engine/dynamics/free_flight.h"
 
@@ -221,31 +222,21 @@ void World::step(double h) {
   // Islands of the trial: movers linked by near pairs. Those holding a crossing back off
   // alone; the rest keep the whole step (DESIGN.md: a collision in one pile must not shorten
   // every other body's step).
-  std::vector<std::size_t> parent(bodies_.size());
-  for (std::size_t i = 0; i < parent.size(); ++i)
-    parent[i] = i;
-  auto root = [&](std::size_t i) {
-    while (parent[i] != i) {
-      parent[i] = parent[parent[i]];
-      i = parent[i];
-    }
-    return i;
-  };
+  DisjointSets islands;
+  islands.reset(bodies_.size());
   for (const BodyPair& pair : detected_pairs_) {
-    if (moving_[pair.a] == 0 || moving_[pair.b] == 0) continue;
-    const std::size_t ra = root(pair.a), rb = root(pair.b);
-    parent[std::max(ra, rb)] = std::min(ra, rb);
+    if (moving_[pair.a] != 0 && moving_[pair.b] != 0) islands.unite(pair.a, pair.b);
   }
   std::vector<std::uint8_t> crossing_root(bodies_.size(), 0);
   for (const ContactManifold& m : detected_) {
     if (m.state() != PairState::kIntersecting) continue;
-    if (moving_[m.body_a] != 0) crossing_root[root(m.body_a)] = 1;
-    if (moving_[m.body_b] != 0) crossing_root[root(m.body_b)] = 1;
+    if (moving_[m.body_a] != 0) crossing_root[islands.root(m.body_a)] = 1;
+    if (moving_[m.body_b] != 0) crossing_root[islands.root(m.body_b)] = 1;
   }
   std::vector<std::size_t> crossing_members;
   std::vector<std::uint8_t> in_crossing(bodies_.size(), 0);
   for (const std::size_t i : members_) {
-    if (crossing_root[root(i)] != 0) {
+    if (crossing_root[islands.root(i)] != 0) {
       crossing_members.push_back(i);
       in_crossing[i] = 1;
     }
