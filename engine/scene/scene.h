@@ -1,0 +1,94 @@
+// A scene as its file describes it (INTERFACE.md, "Scene file"): every key, with the defaults
+// filled in. scene_loader.h reads and validates it; scene_world.h builds the World from it.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/core/types.h"
+#include "engine/dynamics/material.h"
+#include "engine/geometry/rugosity_pattern.h"
+
+namespace rugosim {
+
+// The defaults of the scene format, in one place (docs/scene-format.md lists them too).
+struct SceneDefaults {
+  static constexpr double kGravityY = -9.81;  // m/s²
+  static constexpr std::uint64_t kSeed = 0;
+  static constexpr double kQ = 0.9;               // λ = q·σ
+  static constexpr double kFrictionGain = 100.0;  // 1/m
+  static constexpr double kBlobIrregularity = 0.4;
+  static constexpr std::size_t kSegments = 32;  // for generated shapes without "segments"
+  static constexpr int kWidth = 1280;           // px
+  static constexpr int kHeight = 720;           // px
+  static constexpr double kFps = 30.0;          // frames per second
+  static constexpr const char* kBackground = "#f4f1ea";
+  static constexpr const char* kAccuracy = "normal";
+};
+
+enum class ShapeKind { kControlPoints, kCircle, kEllipse, kBox, kBlob };
+
+struct ShapeSpec {
+  ShapeKind kind = ShapeKind::kControlPoints;
+  std::vector<Vec2> control_points;                        // m, body frame (kControlPoints)
+  double radius = 0.0;                                     // m (circle, blob)
+  Vec2 radii = Vec2::Zero();                               // m (ellipse)
+  Vec2 size = Vec2::Zero();                                // m, width and height (box)
+  double irregularity = SceneDefaults::kBlobIrregularity;  // blob, in [0, 0.9]
+  std::uint64_t seed = 0;                                  // blob outline
+  std::size_t segments = SceneDefaults::kSegments;         // generated shapes
+};
+
+// σ per segment: one value for all, a list with one per segment, or a pattern scaled by sigma.
+struct RugositySpec {
+  std::optional<RugosityPattern> pattern;
+  std::vector<double> sigma;  // m: empty (σ = 0), one value, or one per segment
+};
+
+struct BodySpec {
+  std::string name;
+  bool fixed = false;
+  ShapeSpec shape;
+  Vec2 position = Vec2::Zero();   // m, the body frame's origin
+  double angle = 0.0;             // rad
+  Vec2 velocity = Vec2::Zero();   // m/s
+  double angular_velocity = 0.0;  // rad/s
+  Material material;
+  std::string material_name;  // the name in "materials", empty for an inline or default one
+  RugositySpec rugosity;
+};
+
+struct CameraSpec {
+  bool automatic = true;       // "auto": fit every body over the whole clip
+  Vec2 center = Vec2::Zero();  // m
+  double height = 0.0;         // m, of the visible world
+};
+
+struct RenderSpec {
+  int width = SceneDefaults::kWidth;
+  int height = SceneDefaults::kHeight;
+  double fps = SceneDefaults::kFps;
+  CameraSpec camera;
+  std::string background = SceneDefaults::kBackground;
+  std::vector<std::string> overlays;
+};
+
+struct Scene {
+  int version = 1;
+  std::string name;
+  Vec2 gravity = Vec2(0.0, SceneDefaults::kGravityY);
+  double duration = 0.0;  // s, > 0
+  std::uint64_t seed = SceneDefaults::kSeed;
+  std::string accuracy = SceneDefaults::kAccuracy;
+  double q = SceneDefaults::kQ;
+  double friction_gain = SceneDefaults::kFrictionGain;
+  std::map<std::string, Material> materials;
+  std::vector<BodySpec> bodies;
+  RenderSpec render;
+};
+
+}  // namespace rugosim

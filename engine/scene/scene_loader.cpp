@@ -1,0 +1,718 @@
+#include "engine/scene/scene_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <tuple>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "engine/geometry/shapes.h"
+
+namespace rugosim {
+namespace {
+
+using nlohmann::json;
+
+// Upper bounds that keep a typo from asking for terabytes; far above any sensible scene.
+constexpr std::size_t kMaxSegments = 100000;
+constexpr int kMaxImageSide = 16384;  // px
+constexpr double kMaxFps = 1000.0;
+constexpr std::size_t kMinSegments = 4;
+
+std::string type_name(const json& v) {
+  switch (v.type()) {
+    case json::value_t::null:
+      return "null";
+    case json::value_t::boolean:
+      return "a boolean";
+    case json::value_t::string:
+      return "a string";
+    case json::value_t::array:
+      return "an array";
+    case json::value_t::object:
+      return "an object";
+    case json::value_t::binary:
+      return "binary data";
+    case json::value_t::discarded:
+      return "nothing";
+    default:
+      return "a number";
+  }
+}
+
+// A value as the user wrote it, shortened, for "got ..." in messages.
+std::string shown(const json& v) {
+  if (v.is_object()) return type_name(v);
+  if (v.is_array()) {
+    // A short array of plain values is shown as written, e.g. [1, 0].
+    const bool plain = v.size() <= 4 && std::none_of(v.begin(), v.end(), [](const json& e) {
+                         return e.is_structured();
+                       });
+    if (!plain) return "an array of " + std::to_string(v.size());
+  }
+  std::string text = v.dump();
+  if (text.size() > 40) text = text.substr(0, 37) + "...";
+  return text;
+}
+
+// RFC 6901: "~" and "/" in a key become "~0" and "~1".
+std::string pointer_token(std::string_view key) {
+  std::string out;
+  for (const char c : key) {
+    if (c == '~') {
+      out += "~0";
+    } else if (c == '/') {
+      out += "~1";
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string child(const std::string& path, std::string_view key) {
+  return path + "/" + pointer_token(key);
+}
+
+std::string child(const std::string& path, std::size_t index) {
+  return path + "/" + std::to_string(index);
+}
+
+// Bytes a terminal would not show (control characters, invalid UTF-8) as \xNN.
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f) {
+      out += c;
+    } else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", byte);
+      out += hex;
+    }
+  }
+  return out;
+}
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j)
+    row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+class Reader {
+ public:
+  Reader(std::string file, std::vector<SceneError>& errors)
+      : file_(std::move(file)), errors_(errors) {}
+
+  void error(const std::string& path, std::string message) {
+    errors_.push_back({file_, path.empty() ? "/" : path, std::move(message), 0, 0});
+  }
+
+  // Reports keys of `object` not in `allowed`, with a suggestion when one is close.
+  void check_keys(const json& object, const std::string& path,
+                  const std::vector<std::string>& allowed) {
+    for (const auto& [key, value] : object.items()) {
+      if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+      std::string message = "unknown key \"" + key + "\"";
+      const std::string suggestion = closest_match(key, allowed);
+      if (!suggestion.empty()) message += "; did you mean \"" + suggestion + "\"?";
+      error(child(path, key), message);
+    }
+  }
+
+  bool is_object(const json& v, const std::string& path) {
+    if (v.is_object()) return true;
+    error(path, "expected an object, got " + shown(v));
+    return false;
+  }
+
+  bool number(const json& v, const std::string& path, double& out) {
+    if (!v.is_number()) {
+      error(path, "expected a number, got " + shown(v));
+      return false;
+    }
+    const double x = v.get<double>();
+    if (!std::isfinite(x)) {
+      error(path, "expected a finite number, got " + shown(v));
+      return false;
+    }
+    out = x;
+    return true;
+  }
+
+  // A finite number in [lo, hi] (either end may be open); `what` names the unit or range.
+  void ranged(const json& v, const std::string& path, double& out, double lo, bool lo_open,
+              double hi, bool hi_open, const std::string& expectation) {
+    double x = 0.0;
+    if (!number(v, path, x)) return;
+    const bool above = lo_open ? x > lo : x >= lo;
+    const bool below = hi_open ? x < hi : x <= hi;
+    if (!(above && below)) {
+      error(path, "expected " + expectation + ", got " + shown(v));
+      return;
+    }
+    out = x;
+  }
+
+  void positive(const json& v, const std::string& path, double& out, const std::string& unit) {
+    ranged(v, path, out, 0.0, true, std::numeric_limits<double>::infinity(), true,
+           "a number > 0" + (unit.empty() ? std::string() : " (" + unit + ")"));
+  }
+
+  void vec2(const json& v, const std::string& path, Vec2& out) {
+    if (!v.is_array() || v.size() != 2) {
+      error(path, "expected an array of 2 numbers [x, y], got " + shown(v));
+      return;
+    }
+    double x = 0.0, y = 0.0;
+    const bool ok_x = number(v[0], child(path, 0), x);
+    const bool ok_y = number(v[1], child(path, 1), y);
+    if (ok_x && ok_y) out = Vec2(x, y);
+  }
+
+  void boolean(const json& v, const std::string& path, bool& out) {
+    if (!v.is_boolean()) {
+      error(path, "expected true or false, got " + shown(v));
+      return;
+    }
+    out = v.get<bool>();
+  }
+
+  void string(const json& v, const std::string& path, std::string& out) {
+    if (!v.is_string()) {
+      error(path, "expected a string, got " + shown(v));
+      return;
+    }
+    out = v.get<std::string>();
+  }
+
+  void count(const json& v, const std::string& path, std::size_t& out, std::size_t lo,
+             std::size_t hi, const std::string& what) {
+    const std::string expectation =
+        "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (" + what + ")";
+    if (!v.is_number_integer()) {
+      error(path, "expected " + expectation + ", got " + shown(v));
+      return;
+    }
+    if (v.is_number_unsigned() || v.get<std::int64_t>() >= 0) {
+      const auto n = v.get<std::uint64_t>();
+      if (n >= lo && n <= hi) {
+        out = static_cast<std::size_t>(n);
+        return;
+      }
+    }
+    error(path, "expected " + expectation + ", got " + shown(v));
+  }
+
+  void seed(const json& v, const std::string& path, std::uint64_t& out) {
+    if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<std::int64_t>() < 0)) {
+      error(path, "expected an integer in [0, 2^64 - 1], got " + shown(v));
+      return;
+    }
+    out = v.get<std::uint64_t>();
+  }
+
+ private:
+  std::string file_;
+  std::vector<SceneError>& errors_;
+};
+
+Material read_material(Reader& r, const json& v, const std::string& path) {
+  Material m;
+  if (!r.is_object(v, path)) return m;
+  r.check_keys(v, path, {"density", "restitution", "restitution_max", "lambda_min"});
+  if (v.contains("density")) r.positive(v["density"], child(path, "density"), m.density, "kg/m²");
+  if (v.contains("restitution")) {
+    r.ranged(v["restitution"], child(path, "restitution"), m.restitution, 0.0, false, 1.0, false,
+             "a number in [0, 1]");
+  }
+  // Unset, ε_max follows ε up: max(ε, the default 0.5), so setting only a bouncier ε is valid.
+  m.restitution_max = std::max(m.restitution, Material::kDefaultRestitutionMax);
+  if (v.contains("restitution_max")) {
+    double eps_max = m.restitution_max;
+    r.ranged(v["restitution_max"], child(path, "restitution_max"), eps_max, 0.0, false, 1.0, false,
+             "a number in [0, 1]");
+    if (eps_max < m.restitution) {
+      r.error(child(path, "restitution_max"), "expected restitution_max >= restitution (" +
+                                                  shown(v["restitution"]) + "), got " +
+                                                  shown(v["restitution_max"]));
+    }
+    m.restitution_max = eps_max;
+  }
+  if (v.contains("lambda_min")) {
+    r.ranged(v["lambda_min"], child(path, "lambda_min"), m.lambda_min, 0.0, false,
+             std::numeric_limits<double>::infinity(), true, "a number >= 0 (m)");
+  }
+  return m;
+}
+
+// The segment count a shape will have, for checking a σ list; 0 when the shape is invalid.
+std::size_t read_shape(Reader& r, const json& v, const std::string& path, ShapeSpec& shape) {
+  static const std::vector<std::string> kinds = {"control_points", "circle", "ellipse", "box",
+                                                 "blob"};
+  if (!r.is_object(v, path)) return 0;
+  if (v.size() != 1) {
+    r.error(path,
+            "expected exactly one of \"control_points\", \"circle\", \"ellipse\", "
+            "\"box\", \"blob\", got " +
+                std::to_string(v.size()) + " keys");
+    r.check_keys(v, path, kinds);
+    return 0;
+  }
+  const std::string kind = v.begin().key();
+  const json& spec = v.begin().value();
+  const std::string at = child(path, kind);
+  if (kind == "control_points") {
+    shape.kind = ShapeKind::kControlPoints;
+    if (!spec.is_array() || spec.size() < kMinSegments || spec.size() > kMaxSegments) {
+      r.error(at, "expected an array of 4 to " + std::to_string(kMaxSegments) +
+                      " points [x, y], got " +
+                      (spec.is_array() ? std::to_string(spec.size()) + " points" : shown(spec)));
+      return 0;
+    }
+    for (std::size_t i = 0; i < spec.size(); ++i) {
+      Vec2 p = Vec2::Zero();
+      r.vec2(spec[i], child(at, i), p);
+      shape.control_points.push_back(p);
+    }
+    shape.segments = spec.size();
+    return spec.size();
+  }
+  if (!r.is_object(spec, at)) return 0;
+  auto segments = [&]() {
+    if (spec.contains("segments")) {
+      r.count(spec["segments"], child(at, "segments"), shape.segments, kMinSegments, kMaxSegments,
+              "B-spline segments");
+    }
+  };
+  auto required = [&](const char* key) -> const json* {
+    if (spec.contains(key)) return &spec[key];
+    r.error(child(at, key), std::string("missing required key \"") + key + "\"");
+    return nullptr;
+  };
+  if (kind == "circle") {
+    shape.kind = ShapeKind::kCircle;
+    r.check_keys(spec, at, {"radius", "segments"});
+    if (const json* radius = required("radius"))
+      r.positive(*radius, child(at, "radius"), shape.radius, "m");
+    segments();
+  } else if (kind == "ellipse") {
+    shape.kind = ShapeKind::kEllipse;
+    r.check_keys(spec, at, {"radii", "segments"});
+    if (const json* radii = required("radii")) {
+      r.vec2(*radii, child(at, "radii"), shape.radii);
+      if (radii->is_array() && radii->size() == 2 &&
+          !(shape.radii.x() > 0.0 && shape.radii.y() > 0.0)) {
+        r.error(child(at, "radii"), "expected two radii > 0 (m), got " + shown(*radii));
+      }
+    }
+    segments();
+  } else if (kind == "box") {
+    shape.kind = ShapeKind::kBox;
+    r.check_keys(spec, at, {"size", "segments"});
+    if (const json* size = required("size")) {
+      r.vec2(*size, child(at, "size"), shape.size);
+      if (size->is_array() && size->size() == 2 &&
+          !(shape.size.x() > 0.0 && shape.size.y() > 0.0)) {
+        r.error(child(at, "size"), "expected a width and a height > 0 (m), got " + shown(*size));
+      }
+    }
+    segments();
+  } else if (kind == "blob") {
+    shape.kind = ShapeKind::kBlob;
+    r.check_keys(spec, at, {"radius", "irregularity", "segments", "seed"});
+    if (const json* radius = required("radius"))
+      r.positive(*radius, child(at, "radius"), shape.radius, "m");
+    if (spec.contains("irregularity")) {
+      r.ranged(spec["irregularity"], child(at, "irregularity"), shape.irregularity, 0.0, false,
+               kMaxBlobIrregularity, false, "a number in [0, 0.9]");
+    }
+    if (spec.contains("seed")) r.seed(spec["seed"], child(at, "seed"), shape.seed);
+    segments();
+  } else {
+    std::string message = "unknown shape \"" + kind +
+                          "\"; expected one of \"control_points\", "
+                          "\"circle\", \"ellipse\", \"box\", \"blob\"";
+    const std::string suggestion = closest_match(kind, kinds);
+    if (!suggestion.empty()) message += " (did you mean \"" + suggestion + "\"?)";
+    r.error(at, message);
+    return 0;
+  }
+  return shape.segments;
+}
+
+void read_rugosity(Reader& r, const json& v, const std::string& path, std::size_t segments,
+                   RugositySpec& rugosity) {
+  if (!r.is_object(v, path)) return;
+  r.check_keys(v, path, {"pattern", "sigma"});
+  const std::string sigma_path = child(path, "sigma");
+  if (v.contains("pattern")) {
+    std::string name;
+    r.string(v["pattern"], child(path, "pattern"), name);
+    if (v["pattern"].is_string()) {
+      rugosity.pattern = parse_rugosity_pattern(name);
+      if (!rugosity.pattern) {
+        std::string message = "unknown pattern \"" + name +
+                              "\"; expected one of \"type_1\", "
+                              "\"type_2\", \"type_3\", \"type_4\"";
+        const std::string suggestion =
+            closest_match(name, {"type_1", "type_2", "type_3", "type_4"});
+        if (!suggestion.empty()) message += " (did you mean \"" + suggestion + "\"?)";
+        r.error(child(path, "pattern"), message);
+      }
+    }
+    if (!v.contains("sigma")) {
+      r.error(sigma_path, "missing required key \"sigma\" (the pattern's largest σ, m)");
+    } else if (!v["sigma"].is_number()) {
+      r.error(sigma_path,
+              "expected one number >= 0 (m) to scale the pattern, got " + shown(v["sigma"]));
+    }
+  }
+  if (!v.contains("sigma")) return;
+  const json& sigma = v["sigma"];
+  const std::string expectation = "a number >= 0 (m)";
+  if (sigma.is_array()) {
+    if (segments != 0 && sigma.size() != segments) {
+      r.error(sigma_path, "expected " + std::to_string(segments) +
+                              " values, one per segment, got " + std::to_string(sigma.size()));
+      return;
+    }
+    for (std::size_t i = 0; i < sigma.size(); ++i) {
+      double s = 0.0;
+      r.ranged(sigma[i], child(sigma_path, i), s, 0.0, false,
+               std::numeric_limits<double>::infinity(), true, expectation);
+      rugosity.sigma.push_back(s);
+    }
+  } else if (sigma.is_number()) {
+    double s = 0.0;
+    r.ranged(sigma, sigma_path, s, 0.0, false, std::numeric_limits<double>::infinity(), true,
+             expectation);
+    rugosity.sigma.push_back(s);
+  } else if (!v.contains("pattern")) {
+    r.error(sigma_path, "expected a number >= 0 (m) or one per segment, got " + shown(sigma));
+  }
+}
+
+void read_body(Reader& r, const json& v, const std::string& path, const Scene& scene,
+               BodySpec& body) {
+  if (!r.is_object(v, path)) return;
+  r.check_keys(v, path,
+               {"name", "fixed", "shape", "position", "angle", "velocity", "angular_velocity",
+                "material", "rugosity"});
+  if (v.contains("name")) {
+    r.string(v["name"], child(path, "name"), body.name);
+    if (v["name"].is_string() && body.name.empty()) {
+      r.error(child(path, "name"), "expected a non-empty name");
+    }
+  } else {
+    r.error(child(path, "name"), "missing required key \"name\"");
+  }
+  if (v.contains("fixed")) r.boolean(v["fixed"], child(path, "fixed"), body.fixed);
+  std::size_t segments = 0;
+  if (v.contains("shape")) {
+    segments = read_shape(r, v["shape"], child(path, "shape"), body.shape);
+  } else {
+    r.error(child(path, "shape"), "missing required key \"shape\"");
+  }
+  if (v.contains("position")) r.vec2(v["position"], child(path, "position"), body.position);
+  if (v.contains("angle")) r.number(v["angle"], child(path, "angle"), body.angle);
+  if (v.contains("velocity")) r.vec2(v["velocity"], child(path, "velocity"), body.velocity);
+  if (v.contains("angular_velocity")) {
+    r.number(v["angular_velocity"], child(path, "angular_velocity"), body.angular_velocity);
+  }
+  if (body.fixed && (v.contains("velocity") || v.contains("angular_velocity")) &&
+      (body.velocity != Vec2::Zero() || body.angular_velocity != 0.0)) {
+    r.error(child(path, v.contains("velocity") ? "velocity" : "angular_velocity"),
+            "a fixed body cannot move: expected no velocity");
+  }
+  if (v.contains("material")) {
+    const json& m = v["material"];
+    const std::string at = child(path, "material");
+    if (m.is_string()) {
+      body.material_name = m.get<std::string>();
+      const auto found = scene.materials.find(body.material_name);
+      if (found != scene.materials.end()) {
+        body.material = found->second;
+      } else {
+        std::vector<std::string> names;
+        for (const auto& [name, material] : scene.materials)
+          names.push_back(name);
+        std::string message = "unknown material \"" + body.material_name + "\"";
+        message += names.empty() ? "; the scene defines no \"materials\""
+                                 : "; expected a name defined in /materials";
+        const std::string suggestion = closest_match(body.material_name, names);
+        if (!suggestion.empty()) message += " (did you mean \"" + suggestion + "\"?)";
+        r.error(at, message);
+      }
+    } else if (m.is_object()) {
+      body.material = read_material(r, m, at);
+    } else {
+      r.error(at, "expected a material name or an object, got " + shown(m));
+    }
+  }
+  if (v.contains("rugosity")) {
+    read_rugosity(r, v["rugosity"], child(path, "rugosity"), segments, body.rugosity);
+  }
+}
+
+void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& render) {
+  if (!r.is_object(v, path)) return;
+  r.check_keys(v, path, {"size", "fps", "camera", "background", "overlays"});
+  if (v.contains("size")) {
+    const json& size = v["size"];
+    const std::string at = child(path, "size");
+    if (!size.is_array() || size.size() != 2) {
+      r.error(at, "expected [width, height] in pixels, got " + shown(size));
+    } else {
+      std::size_t w = 0, h = 0;
+      const auto side = static_cast<std::size_t>(kMaxImageSide);
+      r.count(size[0], child(at, 0), w, 1, side, "pixels");
+      r.count(size[1], child(at, 1), h, 1, side, "pixels");
+      render.width = static_cast<int>(w);
+      render.height = static_cast<int>(h);
+    }
+  }
+  if (v.contains("fps")) {
+    r.ranged(v["fps"], child(path, "fps"), render.fps, 0.0, true, kMaxFps, false,
+             "a number in (0, 1000] (frames per second)");
+  }
+  if (v.contains("camera")) {
+    const json& camera = v["camera"];
+    const std::string at = child(path, "camera");
+    if (camera.is_string() && camera.get<std::string>() == "auto") {
+      render.camera.automatic = true;
+    } else if (camera.is_object()) {
+      render.camera.automatic = false;
+      r.check_keys(camera, at, {"center", "height"});
+      if (camera.contains("center")) {
+        r.vec2(camera["center"], child(at, "center"), render.camera.center);
+      } else {
+        r.error(child(at, "center"), "missing required key \"center\"");
+      }
+      if (camera.contains("height")) {
+        r.positive(camera["height"], child(at, "height"), render.camera.height, "m");
+      } else {
+        r.error(child(at, "height"), "missing required key \"height\"");
+      }
+    } else {
+      r.error(at, "expected \"auto\" or {\"center\": [x, y], \"height\": h}, got " + shown(camera));
+    }
+  }
+  if (v.contains("background")) {
+    const std::string at = child(path, "background");
+    r.string(v["background"], at, render.background);
+    const std::string& c = render.background;
+    const bool hex = (c.size() == 7 || c.size() == 4) && c[0] == '#' &&
+                     std::all_of(c.begin() + 1, c.end(), [](char d) {
+                       return std::isxdigit(static_cast<unsigned char>(d));
+                     });
+    if (v["background"].is_string() && !hex) {
+      r.error(at, "expected a colour \"#rrggbb\" or \"#rgb\", got " + shown(v["background"]));
+    }
+  }
+  if (v.contains("overlays")) {
+    const json& overlays = v["overlays"];
+    const std::string at = child(path, "overlays");
+    static const std::vector<std::string> known = {"rugosity", "contacts", "velocity"};
+    if (!overlays.is_array()) {
+      r.error(at, "expected an array of overlay names, got " + shown(overlays));
+    } else {
+      for (std::size_t i = 0; i < overlays.size(); ++i) {
+        std::string name;
+        r.string(overlays[i], child(at, i), name);
+        if (!overlays[i].is_string()) continue;
+        if (std::find(known.begin(), known.end(), name) == known.end()) {
+          std::string message = "unknown overlay \"" + name +
+                                "\"; expected \"rugosity\", \"contacts\" or \"velocity\"";
+          const std::string suggestion = closest_match(name, known);
+          if (!suggestion.empty()) message += " (did you mean \"" + suggestion + "\"?)";
+          r.error(child(at, i), message);
+        } else {
+          render.overlays.push_back(name);
+        }
+      }
+    }
+  }
+}
+
+void read_world(Reader& r, const json& v, const std::string& path, Scene& scene) {
+  if (!r.is_object(v, path)) return;
+  r.check_keys(v, path, {"gravity", "duration", "seed", "accuracy", "q", "friction_gain"});
+  if (v.contains("gravity")) r.vec2(v["gravity"], child(path, "gravity"), scene.gravity);
+  if (v.contains("duration"))
+    r.positive(v["duration"], child(path, "duration"), scene.duration, "s");
+  if (v.contains("seed")) r.seed(v["seed"], child(path, "seed"), scene.seed);
+  if (v.contains("accuracy")) {
+    const std::string at = child(path, "accuracy");
+    r.string(v["accuracy"], at, scene.accuracy);
+    static const std::vector<std::string> presets = {"draft", "normal", "precise"};
+    if (v["accuracy"].is_string() &&
+        std::find(presets.begin(), presets.end(), scene.accuracy) == presets.end()) {
+      std::string message =
+          "expected \"draft\", \"normal\" or \"precise\", got " + shown(v["accuracy"]);
+      const std::string suggestion = closest_match(scene.accuracy, presets);
+      if (!suggestion.empty()) message += " (did you mean \"" + suggestion + "\"?)";
+      r.error(at, message);
+    }
+  }
+  if (v.contains("q")) {
+    r.ranged(v["q"], child(path, "q"), scene.q, 0.0, true, 1.0, false, "a number in (0, 1]");
+  }
+  if (v.contains("friction_gain")) {
+    r.ranged(v["friction_gain"], child(path, "friction_gain"), scene.friction_gain, 0.0, false,
+             std::numeric_limits<double>::infinity(), true, "a number >= 0 (1/m)");
+  }
+}
+
+// 1-based line and column of byte `offset` in `text`.
+std::pair<int, int> line_column(std::string_view text, std::size_t offset) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+}  // namespace
+
+std::string closest_match(std::string_view word, const std::vector<std::string>& candidates) {
+  std::string best;
+  std::size_t best_distance = std::numeric_limits<std::size_t>::max();
+  for (const std::string& candidate : candidates) {
+    const std::size_t d = edit_distance(word, candidate);
+    if (d < best_distance) {
+      best_distance = d;
+      best = candidate;
+    }
+  }
+  const std::size_t allowed = std::max<std::size_t>(1, (word.size() + 2) / 3);
+  return best_distance >= 1 && best_distance <= allowed ? best : std::string();
+}
+
+SceneLoad parse_scene(std::string_view text, const std::string& file) {
+  SceneLoad load;
+  Reader r(file, load.errors);
+  json root;
+  try {
+    root = json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/true,
+                       /*ignore_comments=*/true);
+  } catch (const json::parse_error& e) {
+    // e.what() reads "[json.exception.parse_error.101] parse error at line L, column C: ...";
+    // keep what follows the position, which says what was expected.
+    std::string what = e.what();
+    const std::size_t colon = what.find(": ", what.find("parse error"));
+    const std::string reason = colon == std::string::npos ? what : what.substr(colon + 2);
+    const auto [line, column] = line_column(text, e.byte == 0 ? 0 : e.byte - 1);
+    load.errors.push_back({file, "", "invalid JSON: " + printable(reason), line, column});
+    return load;
+  } catch (const json::exception& e) {
+    // E.g. "number overflow parsing '1e999'": no position from the parser, so find the
+    // quoted text in the file.
+    std::string what = e.what();
+    const std::size_t bracket = what.find("] ");
+    const std::string reason = bracket == std::string::npos ? what : what.substr(bracket + 2);
+    int line = 1, column = 1;
+    const std::size_t open = reason.find('\'');
+    const std::size_t close = reason.rfind('\'');
+    if (open != std::string::npos && close > open) {
+      const std::size_t at = text.find(reason.substr(open + 1, close - open - 1));
+      if (at != std::string_view::npos) std::tie(line, column) = line_column(text, at);
+    }
+    load.errors.push_back({file, "", "invalid JSON: " + reason, line, column});
+    return load;
+  }
+  Scene& scene = load.scene;
+  if (!r.is_object(root, "")) return load;
+  r.check_keys(root, "", {"version", "name", "world", "materials", "bodies", "render"});
+  if (root.contains("version")) {
+    const json& version = root["version"];
+    if (!version.is_number_integer() || version.get<std::int64_t>() != 1) {
+      r.error("/version", "expected 1 (the only scene format version), got " + shown(version));
+    }
+  }
+  if (root.contains("name")) r.string(root["name"], "/name", scene.name);
+  if (scene.name.empty()) scene.name = std::filesystem::path(file).stem().string();
+  if (root.contains("world")) {
+    read_world(r, root["world"], "/world", scene);
+  } else {
+    r.error("/world", "missing required key \"world\" (at least its \"duration\")");
+  }
+  if (root.contains("world") && root["world"].is_object() && !root["world"].contains("duration")) {
+    r.error("/world/duration", "missing required key \"duration\" (s, > 0)");
+  }
+  if (root.contains("materials")) {
+    const json& materials = root["materials"];
+    if (r.is_object(materials, "/materials")) {
+      for (const auto& [name, value] : materials.items())
+        scene.materials[name] = read_material(r, value, child("/materials", name));
+    }
+  }
+  if (!root.contains("bodies")) {
+    r.error("/bodies", "missing required key \"bodies\" (an array of at least one body)");
+  } else if (!root["bodies"].is_array() || root["bodies"].empty()) {
+    r.error("/bodies", "expected an array of at least one body, got " + shown(root["bodies"]));
+  } else {
+    const json& bodies = root["bodies"];
+    std::map<std::string, std::size_t> first_with_name;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      BodySpec body;
+      read_body(r, bodies[i], child("/bodies", i), scene, body);
+      if (!body.name.empty()) {
+        const auto [it, inserted] = first_with_name.emplace(body.name, i);
+        if (!inserted) {
+          r.error(child(child("/bodies", i), "name"),
+                  "duplicate body name \"" + body.name + "\" (also /bodies/" +
+                      std::to_string(it->second) + "/name); names must be unique");
+        }
+      }
+      scene.bodies.push_back(std::move(body));
+    }
+  }
+  if (root.contains("render")) read_render(r, root["render"], "/render", scene.render);
+  return load;
+}
+
+SceneLoad load_scene_file(const std::string& path) {
+  SceneLoad load;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    load.errors.push_back({path, "", "no such file", 0, 0});
+    return load;
+  }
+  if (std::filesystem::is_directory(path, ec)) {
+    load.errors.push_back({path, "", "is a directory, expected a scene file (JSON)", 0, 0});
+    return load;
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) {
+    load.errors.push_back({path, "", "cannot be read", 0, 0});
+    return load;
+  }
+  return parse_scene(text.str(), path);
+}
+
+}  // namespace rugosim

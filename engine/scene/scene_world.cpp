@@ -1,0 +1,115 @@
+#include "engine/scene/scene_world.h"
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
+#include "engine/collision/collision_pipeline.h"
+#include "engine/core/random.h"
+#include "engine/geometry/shapes.h"
+
+namespace rugosim {
+namespace {
+
+std::vector<Vec2> control_points(const ShapeSpec& shape) {
+  switch (shape.kind) {
+    case ShapeKind::kCircle:
+      return circle_control_points(shape.radius, shape.segments);
+    case ShapeKind::kEllipse:
+      return ellipse_control_points(shape.radii.x(), shape.radii.y(), shape.segments);
+    case ShapeKind::kBox:
+      return box_control_points(shape.size.x(), shape.size.y(), shape.segments);
+    case ShapeKind::kBlob:
+      return blob_control_points(shape.radius, shape.irregularity, shape.segments, shape.seed);
+    case ShapeKind::kControlPoints:
+      break;
+  }
+  return shape.control_points;
+}
+
+std::vector<double> sigmas(const Scene& scene, const BodySpec& body, std::size_t index,
+                           std::size_t segments) {
+  const RugositySpec& r = body.rugosity;
+  if (r.pattern) {
+    // Each body's random pattern (type_3) gets its own stream of the scene's seed.
+    return pattern_sigmas(*r.pattern, r.sigma.empty() ? 0.0 : r.sigma.front(), segments,
+                          derive_seed(scene.seed, index));
+  }
+  if (r.sigma.size() == 1) return std::vector<double>(segments, r.sigma.front());
+  return r.sigma;  // one per segment, or empty for σ = 0
+}
+
+std::string body_path(std::size_t i) {
+  return "/bodies/" + std::to_string(i);
+}
+
+}  // namespace
+
+WorldSettings world_settings(const Scene& scene) {
+  WorldSettings settings;
+  settings.gravity = scene.gravity;
+  settings.friction_gain = scene.friction_gain;
+  if (scene.accuracy == "draft") {
+    settings.max_step = 4e-3;
+  } else if (scene.accuracy == "precise") {
+    settings.max_step = 2.5e-4;
+  } else {
+    settings.max_step = 1e-3;
+  }
+  return settings;
+}
+
+std::vector<RigidBodyDesc> body_descriptions(const Scene& scene) {
+  std::vector<RigidBodyDesc> descs;
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    const BodySpec& body = scene.bodies[i];
+    RigidBodyDesc desc;
+    desc.control_points = control_points(body.shape);
+    desc.sigma = sigmas(scene, body, i, desc.control_points.size());
+    desc.q = scene.q;
+    desc.material = body.material;
+    desc.fixed = body.fixed;
+    desc.position = body.position;
+    desc.angle = body.angle;
+    desc.velocity = body.velocity;
+    desc.angular_velocity = body.angular_velocity;
+    descs.push_back(std::move(desc));
+  }
+  return descs;
+}
+
+SceneWorld build_world(const Scene& scene, const std::string& file) {
+  SceneWorld out;
+  auto world = std::make_unique<World>(world_settings(scene));
+  const std::vector<RigidBodyDesc> descs = body_descriptions(scene);
+  for (std::size_t i = 0; i < descs.size(); ++i) {
+    try {
+      world->add_body(RigidBody(descs[i]), scene.bodies[i].name);
+    } catch (const std::invalid_argument& e) {
+      out.errors.push_back({file, body_path(i) + "/shape", e.what(), 0, 0});
+    }
+  }
+  if (!out.errors.empty()) return out;
+
+  std::vector<PlacedShape> placed;
+  for (std::size_t i = 0; i < world->body_count(); ++i) {
+    placed.push_back(
+        {&world->body(i).shape(), world->body(i).placement(), world->body(i).fixed(), false});
+  }
+  CollisionPipeline pipeline;
+  for (const ContactManifold& m : pipeline.detect(placed)) {
+    if (m.state() != PairState::kIntersecting) continue;
+    const Vec2 p = m.intersections.front().point;
+    char where[96];
+    std::snprintf(where, sizeof where, "(%.6g, %.6g)", p.x(), p.y());
+    out.errors.push_back({file, body_path(m.body_a),
+                          "body \"" + world->name(m.body_a) + "\" crosses body \"" +
+                              world->name(m.body_b) + "\" (" + body_path(m.body_b) +
+                              ") at t = 0, near " + where + "; expected bodies apart",
+                          0, 0});
+  }
+  if (out.errors.empty()) out.world = std::move(world);
+  return out;
+}
+
+}  // namespace rugosim
