@@ -1,0 +1,35 @@
+// An output file written atomically: the text goes to a temporary file beside the target,
+// which replaces the target only on commit(). A run that fails or is abandoned leaves the
+// target as it was (no partial or truncated output) and removes the temporary file. A target
+// that exists and is not a regular file (a device, a pipe) is written directly.
+#pragma once
+
+#include <cstdio>
+#include <string>
+#include <string_view>
+
+namespace rugosim::app {
+
+class AtomicFile {
+ public:
+  // Opens "<path>.tmp-<pid>" for writing; throws std::runtime_error naming the path and the
+  // system's reason when it cannot.
+  explicit AtomicFile(std::string path);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  // Appends text; throws std::runtime_error on a write error (e.g. a full disk).
+  void write(std::string_view text);
+  // Flushes, closes and renames over the target; throws std::runtime_error on failure.
+  void commit();
+
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::string temporary_;
+  std::FILE* file_ = nullptr;
+};
+
+}  // namespace rugosim::app

@@ -1,0 +1,30 @@
+#include "render/app/scene_input.h"
+
+#include <fmt/core.h>
+
+#include "engine/scene/scene_loader.h"
+#include "engine/scene/scene_world.h"
+
+namespace rugosim::app {
+
+std::optional<LoadedScene> load_scene_or_report(const std::string& path,
+                                                const std::optional<std::string>& accuracy) {
+  SceneLoad load = load_scene_file(path);
+  std::vector<SceneError> errors = load.errors;
+  SceneWorld built;
+  if (load.ok()) {
+    if (accuracy) load.scene.accuracy = *accuracy;
+    built = build_world(load.scene, path);
+    errors = built.errors;
+  }
+  if (!errors.empty()) {
+    for (const SceneError& e : errors)
+      fmt::print(stderr, "error: {}\n", e.describe());
+    fmt::print(stderr, "{}: {} error{}; the scene was not used\n", path, errors.size(),
+               errors.size() == 1 ? "" : "s");
+    return std::nullopt;
+  }
+  return LoadedScene{std::move(load.scene), std::move(built.world)};
+}
+
+}  // namespace rugosim::app

@@ -1,0 +1,126 @@
+#include <cmath>
+#include <csignal>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include <fmt/core.h>
+
+#include "engine/dynamics/telemetry.h"
+#include "render/app/atomic_file.h"
+#include "render/app/commands.h"
+#include "render/app/progress.h"
+#include "render/app/scene_input.h"
+
+namespace rugosim::app {
+namespace {
+
+volatile std::sig_atomic_t g_interrupted = 0;
+
+extern "C" void on_sigint(int) {
+  g_interrupted = 1;
+}
+
+// Installs the SIGINT handler for the lifetime of a run, restoring the previous one after.
+class SigintGuard {
+ public:
+  SigintGuard() {
+    g_interrupted = 0;
+    struct sigaction action {};
+    action.sa_handler = on_sigint;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(SIGINT, &action, &previous_);
+  }
+  ~SigintGuard() { ::sigaction(SIGINT, &previous_, nullptr); }
+  SigintGuard(const SigintGuard&) = delete;
+  SigintGuard& operator=(const SigintGuard&) = delete;
+
+ private:
+  struct sigaction previous_ {};
+};
+
+// Text for an AtomicFile, written out in chunks so memory stays bounded on long runs.
+class BufferedOutput {
+ public:
+  explicit BufferedOutput(const std::string& path)
+      : file_(path.empty() ? nullptr : std::make_unique<AtomicFile>(path)) {}
+  std::string* buffer() { return file_ ? &text_ : nullptr; }
+  void flush_if_large() {
+    if (file_ && text_.size() > (1u << 20)) flush();
+  }
+  void commit() {
+    if (!file_) return;
+    flush();
+    file_->commit();
+  }
+
+ private:
+  void flush() {
+    file_->write(text_);
+    text_.clear();
+  }
+  std::unique_ptr<AtomicFile> file_;
+  std::string text_;
+};
+
+}  // namespace
+
+int run_simulate(const SimulateOptions& o) {
+  std::optional<LoadedScene> loaded = load_scene_or_report(o.scene_path, o.accuracy);
+  if (!loaded) return kExitUsage;
+  World& world = *loaded->world;
+  const double duration = o.duration.value_or(loaded->scene.duration);
+  const double fps = o.fps.value_or(loaded->scene.render.fps);
+  // Frames k = 0..last at t = k / fps, up to the duration (a rounding below a whole frame
+  // still counts it).
+  const auto last = static_cast<std::size_t>(std::floor(duration * fps + 1e-9));
+
+  try {
+    // Every output is created before the run, so a bad path fails at once.
+    BufferedOutput trajectory(o.trajectory_path);
+    BufferedOutput events(o.events_path);
+    std::unique_ptr<AtomicFile> stats_file =
+        o.stats_path.empty() ? nullptr : std::make_unique<AtomicFile>(o.stats_path);
+    if (std::string* t = trajectory.buffer()) {
+      t->append(kTrajectoryCsvHeader);
+      append_trajectory_rows(*t, world, 0);
+    }
+    if (std::string* e = events.buffer()) e->append(kEventsCsvHeader);
+
+    const SigintGuard sigint;
+    Progress progress(static_cast<double>(last) / fps, stderr);
+    std::size_t frame = 1;
+    for (; frame <= last && g_interrupted == 0; ++frame) {
+      world.advance_to(static_cast<double>(frame) / fps);
+      if (std::string* t = trajectory.buffer()) append_trajectory_rows(*t, world, frame);
+      if (std::string* e = events.buffer()) {
+        for (const ContactEvent& event : world.events())
+          append_event_row(*e, world, event);
+      }
+      world.clear_events();
+      trajectory.flush_if_large();
+      events.flush_if_large();
+      progress.update(world.time());
+    }
+    progress.finish();
+    const double wall = progress.wall_seconds();
+    trajectory.commit();
+    events.commit();
+    if (stats_file) {
+      stats_file->write(stats_json(world.stats(), wall));
+      stats_file->commit();
+    }
+    const StepStats& s = world.stats();
+    fmt::print(stderr,
+               "{}: {:.4g} s simulated in {:.3g} s wall ({} frames): {} steps, {} bisections, "
+               "{} collisions, {} contacts, {} fallbacks, {} crossings\n",
+               g_interrupted != 0 ? "interrupted" : "done", world.time(), wall, frame, s.steps,
+               s.bisections, s.collisions, s.contacts, s.fallbacks, s.crossings);
+    return g_interrupted != 0 ? kExitInterrupted : kExitOk;
+  } catch (const std::runtime_error& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitFailure;
+  }
+}
+
+}  // namespace rugosim::app
