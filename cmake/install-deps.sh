@@ -18,6 +18,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # the pile benchmark's competitor
   libbox2d-dev
+  # rugosim plot: figures drawn by gnuplot
+  gnuplot-nox
 )
 
 missing=()

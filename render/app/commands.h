@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace rugosim::app {
 
@@ -27,5 +28,21 @@ struct SimulateOptions {
 // Simulates and writes the telemetry files atomically; exit 130 on SIGINT after writing what
 // was simulated so far.
 int run_simulate(const SimulateOptions& options);
+
+struct PlotOptions {
+  std::string events_path;      // empty: no friction plot
+  std::string trajectory_path;  // empty: no velocity plot
+  std::string output_dir;       // created when missing
+  // --bodies values, each a comma-separated list of names (quoted as in CSV when a name holds a
+  // comma); empty: every body of the trajectory.
+  std::vector<std::string> bodies;
+  bool contacts = true;  // draw the micro-collisions (kind "contact") under the collisions
+};
+
+// Draws DIR/friction.png (μ of each collision event over time, paper fig. 8) and
+// DIR/velocity.png (speed and vx of the bodies over time, figs. 10, 11) with gnuplot, from
+// whichever of the two CSVs is given. Exit 2 for a bad or missing CSV or an unknown body (no
+// PNG is written), 1 when gnuplot is missing or fails.
+int run_plot(const PlotOptions& options);
 
 }  // namespace rugosim::app

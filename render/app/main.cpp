@@ -1,5 +1,5 @@
-// The rugosim command line (INTERFACE.md, "Command line"): validate, info and simulate so far;
-// render, plot and snapshot arrive with their layers.
+// The rugosim command line (INTERFACE.md, "Command line"): validate, info, simulate and plot so
+// far; render and snapshot arrive with their layers.
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
@@ -49,6 +49,31 @@ int main(int argc, char** argv) {
       "Files are written atomically: on an error none is created or truncated; on Ctrl-C the "
       "frames simulated so far are written and the exit code is 130.");
 
+  PlotOptions plot_options;
+  bool no_contacts = false;
+  CLI::App* plot = app.add_subcommand(
+      "plot", "draw friction per collision event and velocity over time as PNG (gnuplot)");
+  plot->add_option("--events", plot_options.events_path,
+                   "events.csv: draw DIR/friction.png, mu of each collision over time")
+      ->type_name("FILE.csv");
+  plot->add_option("--trajectory", plot_options.trajectory_path,
+                   "trajectory.csv: draw DIR/velocity.png, speed |v| and vx over time")
+      ->type_name("FILE.csv");
+  plot->add_option("-o,--output", plot_options.output_dir, "output folder (created if missing)")
+      ->required()
+      ->type_name("DIR");
+  plot->add_option("--bodies", plot_options.bodies,
+                   "bodies of the velocity plot, NAME,NAME... (default: all; quote a name that "
+                   "holds a comma as in CSV)")
+      ->type_name("NAME,NAME...");
+  plot->add_flag("--no-contacts", no_contacts,
+                 "leave out the resting-contact micro-collisions (kind \"contact\")");
+  plot->footer(
+      "Example: rugosim plot --events out/events.csv --trajectory out/traj.csv -o out/plots "
+      "--bodies 'pebble,\"disk, small\"'\n"
+      "At least one of --events and --trajectory is needed. Requires gnuplot on PATH (Debian: "
+      "gnuplot-nox). PNGs are written atomically; a bad CSV leaves none (exit 2).");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -63,6 +88,10 @@ int main(int argc, char** argv) {
     if (simulate->count("--fps") > 0) sim.fps = fps;
     if (simulate->count("--accuracy") > 0) sim.accuracy = accuracy;
     return run_simulate(sim);
+  }
+  if (plot->parsed()) {
+    plot_options.contacts = !no_contacts;
+    return run_plot(plot_options);
   }
   fmt::print("{}", app.help());
   return kExitOk;
