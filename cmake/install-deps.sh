@@ -20,6 +20,8 @@ packages=(
   libbox2d-dev
   # rugosim plot: figures drawn by gnuplot
   gnuplot-nox
+  # the scene-loader fuzz target: clang with libFuzzer and the sanitizer runtimes
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -250,9 +250,13 @@ Material read_material(Reader& r, const json& v, const std::string& path) {
     r.ranged(v["restitution_max"], child(path, "restitution_max"), eps_max, 0.0, false, 1.0, false,
              "a number in [0, 1]");
     if (eps_max < m.restitution) {
-      r.error(child(path, "restitution_max"), "expected restitution_max >= restitution (" +
-                                                  shown(v["restitution"]) + "), got " +
-                                                  shown(v["restitution_max"]));
+      // Without "restitution" the bound is its default: name that, since v["restitution"] on a
+      // const object without the key is undefined behaviour (found by fuzzing).
+      const std::string bound = v.contains("restitution")
+                                    ? shown(v["restitution"])
+                                    : "the default " + shown(json(m.restitution));
+      r.error(child(path, "restitution_max"), "expected restitution_max >= restitution (" + bound +
+                                                  "), got " + shown(v["restitution_max"]));
     }
     m.restitution_max = eps_max;
   }

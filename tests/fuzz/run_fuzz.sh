@@ -55,9 +55,10 @@ found=$(find "$artifacts" -type f | sort)
 if [ "$status" -ne 0 ] || [ -n "$found" ]; then
   echo "run_fuzz: FAILED (libFuzzer exit status $status)" >&2
   for file in $found; do
-    echo "run_fuzz: input: $file ($(wc -c <"$file") bytes); as text:" >&2
-    # Shown with control bytes escaped, so a terminal is not confused by binary input.
-    od -An -c "$file" | head -n 40 >&2
+    echo "run_fuzz: input: $file ($(wc -c <"$file") bytes), its first 2000 shown:" >&2
+    # cat -v escapes control bytes, so binary input cannot confuse a terminal or a CI log.
+    head -c 2000 "$file" | cat -v >&2
+    echo >&2
     echo "run_fuzz: replay: $build/tests/fuzz/fuzz_scene_loader $file" >&2
     echo "run_fuzz: once fixed: cp $file tests/scene/fuzz_regressions/NAME.json" >&2
   done
