@@ -66,6 +66,12 @@ ContactPlan plan_contact(const ContactBodyState& state_a, const ContactBodyState
   return p;
 }
 
+void sort_most_approaching_first(std::vector<PendingContact>& pending) {
+  std::sort(pending.begin(), pending.end(), [](const PendingContact& x, const PendingContact& y) {
+    return x.approach < y.approach || (x.approach == y.approach && x.index < y.index);
+  });
+}
+
 ContactEvent make_event(const RigidBody& a, const RigidBody& b, const ContactManifold& m,
                         const Contact& c, const ContactPlan& p, const ImpulseResult& r,
                         double time) {

@@ -3,6 +3,9 @@
 // micro-collision), restitution and friction. Rules in contact_resolution.h.
 #pragma once
 
+#include <cstddef>
+#include <vector>
+
 #include "engine/collision/contact.h"
 #include "engine/dynamics/collision_impulse.h"
 #include "engine/dynamics/event_record.h"
@@ -40,6 +43,16 @@ inline ContactPlan plan_contact(const RigidBody& body_a, const RigidBody& body_b
   return plan_contact(contact_state(body_a, c.point), contact_state(body_b, c.point), body_a,
                       body_b, c, settings);
 }
+
+// A contact waiting for its impulse in a pass of resolution: `index` into the caller's list.
+struct PendingContact {
+  double approach = 0.0;  // m/s, the (perturbed) approach speed, negative
+  std::size_t index = 0;
+};
+
+// Most negative approach first (contact_resolution.h); ties broken by index, so the order never
+// depends on the sort's implementation.
+void sort_most_approaching_first(std::vector<PendingContact>& pending);
 
 // The events.csv row of an impulse planned by p with result r.
 ContactEvent make_event(const RigidBody& a, const RigidBody& b, const ContactManifold& m,

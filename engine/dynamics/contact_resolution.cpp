@@ -38,11 +38,7 @@ ResolutionCounts resolve_contacts(std::span<RigidBody> bodies,
   }
   if (refs.empty()) return counts;
 
-  struct Candidate {
-    double approach = 0.0;  // m/s, the (perturbed) approach speed, negative
-    std::size_t ref = 0;
-  };
-  std::vector<Candidate> order;
+  std::vector<PendingContact> order;
   for (int pass = 0; pass < settings.max_passes; ++pass) {
     order.clear();
     for (std::size_t i = 0; i < refs.size(); ++i) {
@@ -53,13 +49,10 @@ ResolutionCounts resolve_contacts(std::span<RigidBody> bodies,
     }
     if (order.empty()) return counts;
     ++counts.passes;
-    // Ties broken by position, so the order never depends on the sort's implementation.
-    std::sort(order.begin(), order.end(), [](const Candidate& x, const Candidate& y) {
-      return x.approach < y.approach || (x.approach == y.approach && x.ref < y.ref);
-    });
+    sort_most_approaching_first(order);
     std::size_t applied = 0;
-    for (const Candidate& candidate : order) {
-      const ContactRef& ref = refs[candidate.ref];
+    for (const PendingContact& candidate : order) {
+      const ContactRef& ref = refs[candidate.index];
       const ContactManifold& m = manifolds[ref.manifold];
       const Contact& c = m.contacts[ref.contact];
       RigidBody& a = bodies[m.body_a];

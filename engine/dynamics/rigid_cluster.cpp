@@ -79,11 +79,7 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
 
   std::vector<std::size_t> members;
   std::vector<FixedContact> fixed_contacts;
-  struct Candidate {
-    double approach = 0.0;
-    std::size_t index = 0;
-  };
-  std::vector<Candidate> order;
+  std::vector<PendingContact> order;
   for (std::size_t root = 0; root < n; ++root) {
     if (marked[root] == 0) continue;
     members.clear();
@@ -121,10 +117,8 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
       }
       if (order.empty()) break;
       ++counts.passes;
-      std::sort(order.begin(), order.end(), [](const Candidate& x, const Candidate& y) {
-        return x.approach < y.approach || (x.approach == y.approach && x.index < y.index);
-      });
-      for (const Candidate& candidate : order) {
+      sort_most_approaching_first(order);
+      for (const PendingContact& candidate : order) {
         const FixedContact& f = fixed_contacts[candidate.index];
         const ContactManifold& m = manifolds[f.manifold];
         const Contact& c = m.contacts[f.contact];
