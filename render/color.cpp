@@ -12,6 +12,15 @@ int hex_digit(char c) {
 }  // namespace
 
 std::optional<Rgba> parse_hex_color(std::string_view text) {
+  if (text.size() == 4 && text[0] == '#') {  // "#rgb" is "#rrggbb"
+    Rgba color;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const int digit = hex_digit(text[1 + c]);
+      if (digit < 0) return std::nullopt;
+      color.channels[c] = static_cast<float>(digit * 17) / 255.f;
+    }
+    return color;
+  }
   if (text.size() != 7 && text.size() != 9) return std::nullopt;
   if (text[0] != '#') return std::nullopt;
   Rgba color;

@@ -1,4 +1,4 @@
-// Colours as the scene file writes them ("#rrggbb" or "#rrggbbaa") and as GL wants them.
+// Colours as the scene file writes them ("#rgb", "#rrggbb", "#rrggbbaa") and as GL wants them.
 #pragma once
 
 #include <array>
@@ -11,7 +11,7 @@ struct Rgba {
   std::array<float, 4> channels{0.f, 0.f, 0.f, 1.f};  // red, green, blue, alpha in [0, 1]
 };
 
-// nullopt when the text is not '#' followed by 6 or 8 hexadecimal digits.
+// "#rgb", "#rrggbb" or "#rrggbbaa"; nullopt for anything else.
 std::optional<Rgba> parse_hex_color(std::string_view text);
 
 }  // namespace rugosim

@@ -62,6 +62,33 @@ void GlApi::load(const std::function<void*(const char*)>& get) {
   RUGOSIM_GL(EnableVertexAttribArray);
   RUGOSIM_GL(VertexAttribPointer);
   RUGOSIM_GL(DrawArrays);
+  RUGOSIM_GL(Enable);
+  RUGOSIM_GL(Disable);
+  RUGOSIM_GL(BlendFunc);
+  RUGOSIM_GL(BlendFuncSeparate);
+  RUGOSIM_GL(LogicOp);
+  RUGOSIM_GL(DrawArraysInstanced);
+  RUGOSIM_GL(BufferSubData);
+  RUGOSIM_GL(Uniform1f);
+  RUGOSIM_GL(Uniform2f);
+  RUGOSIM_GL(Uniform1i);
+  RUGOSIM_GL(Uniform1ui);
+  RUGOSIM_GL(GenTextures);
+  RUGOSIM_GL(DeleteTextures);
+  RUGOSIM_GL(BindTexture);
+  RUGOSIM_GL(ActiveTexture);
+  RUGOSIM_GL(TexParameteri);
+  RUGOSIM_GL(TexStorage2D);
+  RUGOSIM_GL(TexStorage2DMultisample);
+  RUGOSIM_GL(TexBuffer);
+  RUGOSIM_GL(FramebufferTexture2D);
+  RUGOSIM_GL(BlitFramebuffer);
+  RUGOSIM_GL(RenderbufferStorageMultisample);
+  RUGOSIM_GL(VertexAttribIPointer);
+  RUGOSIM_GL(VertexAttribDivisor);
+  RUGOSIM_GL(ClearBufferuiv);
+  RUGOSIM_GL(ClearBufferfv);
+  RUGOSIM_GL(GetIntegerv);
 #undef RUGOSIM_GL
 }
 

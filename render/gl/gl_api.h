@@ -54,6 +54,33 @@ struct GlApi {
   PFNGLENABLEVERTEXATTRIBARRAYPROC EnableVertexAttribArray = nullptr;
   PFNGLVERTEXATTRIBPOINTERPROC VertexAttribPointer = nullptr;
   PFNGLDRAWARRAYSPROC DrawArrays = nullptr;
+  PFNGLENABLEPROC Enable = nullptr;
+  PFNGLDISABLEPROC Disable = nullptr;
+  PFNGLBLENDFUNCPROC BlendFunc = nullptr;
+  PFNGLBLENDFUNCSEPARATEPROC BlendFuncSeparate = nullptr;
+  PFNGLLOGICOPPROC LogicOp = nullptr;
+  PFNGLDRAWARRAYSINSTANCEDPROC DrawArraysInstanced = nullptr;
+  PFNGLBUFFERSUBDATAPROC BufferSubData = nullptr;
+  PFNGLUNIFORM1FPROC Uniform1f = nullptr;
+  PFNGLUNIFORM2FPROC Uniform2f = nullptr;
+  PFNGLUNIFORM1IPROC Uniform1i = nullptr;
+  PFNGLUNIFORM1UIPROC Uniform1ui = nullptr;
+  PFNGLGENTEXTURESPROC GenTextures = nullptr;
+  PFNGLDELETETEXTURESPROC DeleteTextures = nullptr;
+  PFNGLBINDTEXTUREPROC BindTexture = nullptr;
+  PFNGLACTIVETEXTUREPROC ActiveTexture = nullptr;
+  PFNGLTEXPARAMETERIPROC TexParameteri = nullptr;
+  PFNGLTEXSTORAGE2DPROC TexStorage2D = nullptr;
+  PFNGLTEXSTORAGE2DMULTISAMPLEPROC TexStorage2DMultisample = nullptr;
+  PFNGLTEXBUFFERPROC TexBuffer = nullptr;
+  PFNGLFRAMEBUFFERTEXTURE2DPROC FramebufferTexture2D = nullptr;
+  PFNGLBLITFRAMEBUFFERPROC BlitFramebuffer = nullptr;
+  PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC RenderbufferStorageMultisample = nullptr;
+  PFNGLVERTEXATTRIBIPOINTERPROC VertexAttribIPointer = nullptr;
+  PFNGLVERTEXATTRIBDIVISORPROC VertexAttribDivisor = nullptr;
+  PFNGLCLEARBUFFERUIVPROC ClearBufferuiv = nullptr;
+  PFNGLCLEARBUFFERFVPROC ClearBufferfv = nullptr;
+  PFNGLGETINTEGERVPROC GetIntegerv = nullptr;
 
   // Fills every entry through `get` (a backend's GetProcAddress); throws std::runtime_error
   // naming the first function the backend does not provide.

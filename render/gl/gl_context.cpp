@@ -11,6 +11,10 @@ namespace {
 
 constexpr int kMaxSide = 16384;
 
+// The context this thread last made current (through GlContext), so that switching between
+// contexts costs a MakeCurrent only when it is needed.
+thread_local const GlContext* t_current = nullptr;
+
 class OsmesaContext final : public GlContext {
  public:
   OsmesaContext(int width, int height) : GlContext(GlBackend::kOsmesa, width, height) {
@@ -29,9 +33,7 @@ class OsmesaContext final : public GlContext {
     if (context_ == nullptr) {
       throw GlUnavailable("OSMesa: no OpenGL 4.5 core context (is Mesa's libOSMesa installed?)");
     }
-    // OSMesa needs a buffer to be current; frames go to the framebuffer object instead, so a
-    // single pixel does.
-    if (!OSMesaMakeCurrent(context_, &dummy_, GL_UNSIGNED_BYTE, 1, 1)) {
+    if (!bind()) {
       OSMesaDestroyContext(context_);
       throw GlUnavailable("OSMesa: cannot make the context current");
     }
@@ -39,6 +41,13 @@ class OsmesaContext final : public GlContext {
         [](const char* name) { return reinterpret_cast<void*>(OSMesaGetProcAddress(name)); });
   }
   ~OsmesaContext() override { OSMesaDestroyContext(context_); }
+
+ protected:
+  // OSMesa needs a buffer to be current; frames go to the framebuffer object instead, so a
+  // single pixel does.
+  bool bind() override {
+    return OSMesaMakeCurrent(context_, &dummy_, GL_UNSIGNED_BYTE, 1, 1) != 0;
+  }
 
  private:
   OSMesaContext context_ = nullptr;
@@ -72,8 +81,7 @@ class EglContext final : public GlContext {
     // No config and no surface (EGL_KHR_no_config_context, EGL_KHR_surfaceless_context): the
     // frame goes to a framebuffer object.
     context_ = eglCreateContext(display_, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
-    if (context_ == EGL_NO_CONTEXT ||
-        !eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
+    if (context_ == EGL_NO_CONTEXT || !bind()) {
       if (context_ != EGL_NO_CONTEXT) eglDestroyContext(display_, context_);
       eglTerminate(display_);
       throw GlUnavailable("EGL: no OpenGL 4.5 core context without a surface");
@@ -84,6 +92,11 @@ class EglContext final : public GlContext {
     eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
     eglDestroyContext(display_, context_);
     eglTerminate(display_);
+  }
+
+ protected:
+  bool bind() override {
+    return eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_) == EGL_TRUE;
   }
 
  private:
@@ -115,9 +128,21 @@ std::unique_ptr<GlContext> GlContext::create(GlBackend backend, int width, int h
 GlContext::GlContext(GlBackend backend, int width, int height)
     : backend_(backend), width_(width), height_(height) {}
 
-GlContext::~GlContext() = default;
+GlContext::~GlContext() {
+  if (t_current == this) t_current = nullptr;
+}
+
+void GlContext::make_current() {
+  if (t_current == this) return;
+  if (!bind()) {
+    throw GlUnavailable(std::string(gl_backend_name(backend_)) +
+                        ": cannot make the context current");
+  }
+  t_current = this;
+}
 
 void GlContext::initialise(void* (*get_proc)(const char*)) {
+  t_current = this;
   try {
     gl_.load(get_proc);
   } catch (const std::runtime_error& e) {

@@ -36,6 +36,11 @@ class GlContext {
   GlContext(const GlContext&) = delete;
   GlContext& operator=(const GlContext&) = delete;
 
+  // Makes this context the thread's current one when another was made current since (a thread
+  // may hold several contexts, e.g. one per backend); cheap when it already is. Throws
+  // GlUnavailable when the backend refuses.
+  void make_current();
+
   const GlApi& gl() const { return gl_; }
   GlBackend backend() const { return backend_; }
   int width() const { return width_; }
@@ -44,11 +49,16 @@ class GlContext {
   // golden image was made with.
   std::string renderer() const;
 
+  // The framebuffer object every frame ends in (RGBA8, width × height), which read_pixels
+  // reads.
+  GLuint framebuffer() const { return framebuffer_; }
+
   // The framebuffer as RGBA8, rows from the top of the image down.
   std::vector<std::uint8_t> read_pixels() const;
 
  protected:
   GlContext(GlBackend backend, int width, int height);
+  virtual bool bind() = 0;  // the backend's MakeCurrent
   // Loads the functions and creates the framebuffer; called by the backends once current.
   void initialise(void* (*get_proc)(const char*));
 

@@ -1,0 +1,93 @@
+// Draws frames of a scene off-screen (DESIGN.md, "Rendering"). Every body's detailed outline
+// (rugosity_detail.h) is made and uploaded once, in the body's frame; each frame sends only the
+// bodies' transforms and the overlays, and draws everything in four batched calls:
+//   1. fills: all bodies' triangle fans into an integer target with XOR (body_fill.frag says
+//      why that fills concave outlines exactly without triangulating them);
+//   2. resolve: body index → colour, or the background;
+//   3. outlines: quads along every outline, in the body's colour or by λ (overlay `rugosity`);
+//   4. overlays: contacts and velocities.
+// Edges are anti-aliased either by the shaders (coverage ramps on outlines and overlays, which
+// cover the fills' edges) or by 4× MSAA of every pass.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/dynamics/frame_snapshot.h"
+#include "engine/geometry/periodic_bspline.h"
+#include "render/color.h"
+#include "render/draw/camera.h"
+#include "render/draw/overlay_geometry.h"
+#include "render/draw/rugosity_detail.h"
+#include "render/gl/gl_context.h"
+#include "render/image.h"
+
+namespace rugosim {
+
+enum class AntiAliasing { kShader, kMsaa, kNone };
+std::optional<AntiAliasing> parse_anti_aliasing(std::string_view name);  // "shader", "msaa", "none"
+std::string_view anti_aliasing_name(AntiAliasing aa);
+
+// How one body looks: its curve (the body frame the snapshot's placement maps to the world),
+// σ and λ per segment of that curve, colours, and the seed of its detail.
+struct BodyLook {
+  PeriodicBSpline curve;
+  std::vector<double> sigma;   // m, one per segment
+  std::vector<double> lambda;  // m, one per segment (colours the `rugosity` overlay)
+  Rgba fill;
+  bool fixed = false;
+  std::uint64_t seed = 0;
+};
+
+struct RenderSettings {
+  Camera camera;  // its pixel size sets the detail; width_px × height_px must be the context's
+  Rgba background;
+  AntiAliasing anti_aliasing = AntiAliasing::kShader;
+  Overlays overlays;
+  double outline_px = 1.5;  // px at 720 lines; scaled with the frame's height
+  DetailSettings detail;    // pixel_size is taken from the camera
+};
+
+class SceneRenderer {
+ public:
+  // Throws GlUnavailable when the context cannot do what the settings ask (e.g. MSAA of an
+  // integer target), std::invalid_argument for a camera of another size than the context.
+  SceneRenderer(GlContext& context, std::vector<BodyLook> bodies, const RenderSettings& settings);
+  ~SceneRenderer();
+  SceneRenderer(const SceneRenderer&) = delete;
+  SceneRenderer& operator=(const SceneRenderer&) = delete;
+
+  // Draws the frame into the context's framebuffer. Throws std::runtime_error on a GL error.
+  void draw(const FrameSnapshot& frame);
+  // Reads what draw() made, rows top first.
+  void read(Image& image) const;
+  Image render(const FrameSnapshot& frame) {
+    draw(frame);
+    Image image;
+    read(image);
+    return image;
+  }
+
+  // Points per body outline as generated (the detail level chosen for the camera).
+  const std::vector<DetailOutline>& outlines() const { return outlines_; }
+
+ private:
+  struct GpuState;
+  void build_meshes();
+  void create_targets();
+  void upload_transforms(const FrameSnapshot& frame);
+
+  GlContext& context_;
+  const GlApi& gl_;
+  std::vector<BodyLook> bodies_;
+  RenderSettings settings_;
+  std::vector<DetailOutline> outlines_;
+  std::vector<bool> fixed_;
+  OverlayBuilder overlay_builder_;
+  std::unique_ptr<GpuState> gpu_;
+};
+
+}  // namespace rugosim

@@ -1,0 +1,33 @@
+// A rendered frame in memory: 8-bit RGBA, rows from the top of the image down (the order of
+// PNG files and video frames; GlContext::read_pixels returns it this way).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace rugosim {
+
+struct Image {
+  int width = 0;                   // px
+  int height = 0;                  // px
+  std::vector<std::uint8_t> rgba;  // width × height × 4 bytes, row-major, top row first
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgba(bytes(w, h), 0) {}
+
+  // Bytes of a w × h image.
+  static std::size_t bytes(int w, int h) {
+    return static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4;
+  }
+  std::size_t stride() const { return static_cast<std::size_t>(width) * 4; }  // bytes per row
+  std::uint8_t* pixel(int x, int y) { return rgba.data() + offset(x, y); }
+  const std::uint8_t* pixel(int x, int y) const { return rgba.data() + offset(x, y); }
+
+ private:
+  std::size_t offset(int x, int y) const {
+    return static_cast<std::size_t>(y) * stride() + static_cast<std::size_t>(x) * 4;
+  }
+};
+
+}  // namespace rugosim
