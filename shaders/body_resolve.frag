@@ -1,13 +1,12 @@
-// Fills, second pass: turns the body index left by the first pass into the body's colour, or
-// the background. With MSAA the pass runs once per sample (gl_SampleID), so the colour target's
-// own resolve averages the samples of an edge pixel.
+// Fills, second pass, over each body's box: turns the body index left by the first pass into the
+// body's colour; pixels of no body keep the cleared background. With MSAA the pass runs once
+// per sample (gl_SampleID), so the colour target's own resolve averages an edge pixel's samples.
 #ifdef MSAA
 uniform usampler2DMS ids;
 #else
 uniform usampler2D ids;
 #endif
 uniform samplerBuffer palette;  // per body: fill colour, outline colour
-uniform vec4 background;
 
 layout(location = 0) out vec4 colour;
 
@@ -17,5 +16,6 @@ void main() {
 #else
   uint id = texelFetch(ids, ivec2(gl_FragCoord.xy), 0).r;
 #endif
-  colour = id == 0u ? background : texelFetch(palette, int(2u * (id - 1u)));
+  if (id == 0u) discard;
+  colour = texelFetch(palette, int(2u * (id - 1u)));
 }

@@ -83,7 +83,7 @@ std::string_view anti_aliasing_name(AntiAliasing aa) {
 struct SceneRenderer::GpuState {
   explicit GpuState(const GlApi& gl, bool msaa)
       : fill(gl, "body_fill.vert", "body_fill.frag"),
-        resolve(gl, "fullscreen.vert", "body_resolve.frag",
+        resolve(gl, "body_fill.vert", "body_resolve.frag",
                 msaa ? std::vector<std::string>{"MSAA 1"} : std::vector<std::string>{}),
         outline(gl, "outline.vert", "outline.frag"),
         overlay(gl, "overlay.vert", "overlay.frag") {}
@@ -96,9 +96,10 @@ struct SceneRenderer::GpuState {
   GLsizei fill_count = 0;
   GLuint outline_vao = 0, outline_vbo = 0;
   GLsizei outline_count = 0;
+  GLuint bounds_vao = 0, bounds_vbo = 0;  // per body, its box in the body frame (2 triangles)
+  GLsizei bounds_count = 0;
   GLuint overlay_vao = 0, overlay_vbo = 0;
   std::size_t overlay_capacity = 0;  // vertices the overlay buffer holds
-  GLuint empty_vao = 0;
   GLuint transform_buffer = 0, transform_texture = 0;
   GLuint palette_buffer = 0, palette_texture = 0;
   GLuint id_texture = 0, id_framebuffer = 0;
@@ -140,11 +141,11 @@ SceneRenderer::~SceneRenderer() {
     return;  // the objects go with the context
   }
   GpuState& g = *gpu_;
-  const GLuint arrays[] = {g.fill_vao, g.outline_vao, g.overlay_vao, g.empty_vao};
+  const GLuint arrays[] = {g.fill_vao, g.bounds_vao, g.outline_vao, g.overlay_vao};
   gl_.DeleteVertexArrays(4, arrays);
-  const GLuint buffers[] = {g.fill_vbo, g.outline_vbo, g.overlay_vbo, g.transform_buffer,
-                            g.palette_buffer};
-  gl_.DeleteBuffers(5, buffers);
+  const GLuint buffers[] = {g.fill_vbo,    g.bounds_vbo,       g.outline_vbo,
+                            g.overlay_vbo, g.transform_buffer, g.palette_buffer};
+  gl_.DeleteBuffers(6, buffers);
   const GLuint textures[] = {g.transform_texture, g.palette_texture, g.id_texture};
   gl_.DeleteTextures(3, textures);
   const GLuint framebuffers[] = {g.id_framebuffer, g.msaa_framebuffer};
@@ -161,6 +162,7 @@ void SceneRenderer::build_meshes() {
     largest_lambda = std::max(largest_lambda, profiles.back().range().hi);
   }
   std::vector<FillVertex> fill;
+  std::vector<FillVertex> bounds;
   std::vector<OutlineVertex> outline;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const BodyLook& body = bodies_[b];
@@ -169,10 +171,22 @@ void SceneRenderer::build_meshes() {
     const std::vector<double>& u = outlines_.back().param;
     const std::size_t n = p.size();
     Vec2 anchor = Vec2::Zero();
-    for (const Vec2& q : p)
+    Vec2 lo = p.front(), hi = p.front();
+    for (const Vec2& q : p) {
       anchor += q;
+      lo = lo.cwiseMin(q);
+      hi = hi.cwiseMax(q);
+    }
     anchor /= static_cast<double>(n);
     const auto body_index = static_cast<std::uint32_t>(b);
+    // The box the resolve pass covers, a pixel wider for the rasteriser's rounding.
+    const double pad = settings_.detail.pixel_size;
+    const Vec2 corners[4] = {Vec2(lo.x() - pad, lo.y() - pad), Vec2(hi.x() + pad, lo.y() - pad),
+                             Vec2(lo.x() - pad, hi.y() + pad), Vec2(hi.x() + pad, hi.y() + pad)};
+    for (const int c : {0, 1, 2, 2, 1, 3}) {
+      bounds.push_back(FillVertex{static_cast<float>(corners[c].x()),
+                                  static_cast<float>(corners[c].y()), body_index});
+    }
     auto fill_vertex = [&](const Vec2& q) {
       fill.push_back(FillVertex{static_cast<float>(q.x()), static_cast<float>(q.y()), body_index});
     };
@@ -200,6 +214,7 @@ void SceneRenderer::build_meshes() {
     }
   }
   g.fill_count = static_cast<GLsizei>(fill.size());
+  g.bounds_count = static_cast<GLsizei>(bounds.size());
   g.outline_count = static_cast<GLsizei>(outline.size());
 
   gl_.GenVertexArrays(1, &g.fill_vao);
@@ -208,6 +223,15 @@ void SceneRenderer::build_meshes() {
   gl_.BindBuffer(GL_ARRAY_BUFFER, g.fill_vbo);
   gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(fill.size() * sizeof(FillVertex)),
                  fill.data(), GL_STATIC_DRAW);
+  set_attribute(gl_, 0, 2, GL_FLOAT, sizeof(FillVertex), offsetof(FillVertex, x));
+  set_attribute(gl_, 1, 1, GL_UNSIGNED_INT, sizeof(FillVertex), offsetof(FillVertex, body));
+
+  gl_.GenVertexArrays(1, &g.bounds_vao);
+  gl_.BindVertexArray(g.bounds_vao);
+  gl_.GenBuffers(1, &g.bounds_vbo);
+  gl_.BindBuffer(GL_ARRAY_BUFFER, g.bounds_vbo);
+  gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bounds.size() * sizeof(FillVertex)),
+                 bounds.data(), GL_STATIC_DRAW);
   set_attribute(gl_, 0, 2, GL_FLOAT, sizeof(FillVertex), offsetof(FillVertex, x));
   set_attribute(gl_, 1, 1, GL_UNSIGNED_INT, sizeof(FillVertex), offsetof(FillVertex, body));
 
@@ -234,7 +258,6 @@ void SceneRenderer::build_meshes() {
   set_attribute(gl_, 2, 4, GL_FLOAT, kOverlayStride, offsetof(OverlayVertex, r));
   set_attribute(gl_, 3, 2, GL_FLOAT, kOverlayStride, offsetof(OverlayVertex, half_width));
 
-  gl_.GenVertexArrays(1, &g.empty_vao);
   gl_.BindVertexArray(0);
 
   // Per body: transform (2 texels, refilled each frame) and colours (fill, outline).
@@ -360,19 +383,24 @@ void SceneRenderer::draw(const FrameSnapshot& frame) {
   gl_.DrawArrays(GL_TRIANGLES, 0, g.fill_count);
   gl_.Disable(GL_COLOR_LOGIC_OP);
 
-  // 2. Resolve into the colour target.
+  // 2. Background by a clear (the cheapest way to fill pixels), then body index → colour over
+  // each body's box only.
   gl_.BindFramebuffer(GL_FRAMEBUFFER, msaa ? g.msaa_framebuffer : context_.framebuffer());
+  const auto& bg = settings_.background.channels;
+  const GLfloat background[4] = {bg[0], bg[1], bg[2], 1.f};
+  gl_.ClearBufferfv(GL_COLOR, 0, background);
   g.resolve.use();
+  gl_.ActiveTexture(GL_TEXTURE2);
+  gl_.BindTexture(GL_TEXTURE_BUFFER, g.transform_texture);
+  gl_.Uniform1i(g.resolve.uniform("transforms"), 2);
   gl_.ActiveTexture(GL_TEXTURE0);
   gl_.BindTexture(msaa ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, g.id_texture);
   gl_.Uniform1i(g.resolve.uniform("ids"), 0);
   gl_.ActiveTexture(GL_TEXTURE1);
   gl_.BindTexture(GL_TEXTURE_BUFFER, g.palette_texture);
   gl_.Uniform1i(g.resolve.uniform("palette"), 1);
-  const auto& bg = settings_.background.channels;
-  gl_.Uniform4f(g.resolve.uniform("background"), bg[0], bg[1], bg[2], 1.f);
-  gl_.BindVertexArray(g.empty_vao);
-  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  gl_.BindVertexArray(g.bounds_vao);
+  gl_.DrawArrays(GL_TRIANGLES, 0, g.bounds_count);
 
   // 3. Outlines, blended over the fills.
   gl_.Enable(GL_BLEND);

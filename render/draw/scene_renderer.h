@@ -3,7 +3,7 @@
 // bodies' transforms and the overlays, and draws everything in four batched calls:
 //   1. fills: all bodies' triangle fans into an integer target with XOR (body_fill.frag says
 //      why that fills concave outlines exactly without triangulating them);
-//   2. resolve: body index → colour, or the background;
+//   2. resolve: body index → colour, over each body's box, on a cleared background;
 //   3. outlines: quads along every outline, in the body's colour or by λ (overlay `rugosity`);
 //   4. overlays: contacts and velocities.
 // Edges are anti-aliased either by the shaders (coverage ramps on outlines and overlays, which
