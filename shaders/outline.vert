@@ -8,7 +8,7 @@ layout(location = 3) in float side;     // −1 inside, +1 outside
 layout(location = 4) in float lambda;   // tolerance λ there, divided by the scene's largest
 
 uniform samplerBuffer transforms;
-uniform samplerBuffer palette;
+uniform samplerBuffer palette;  // per body: fill, outline, fill key
 uniform float metres_per_pixel;
 uniform float half_width;    // px, of the visible line
 uniform float fringe;        // px of anti-aliasing ramp beyond it (0 with MSAA)
@@ -34,5 +34,5 @@ void main() {
   gl_Position = vec4(mat2(m.xy, m.zw) * p + t.xy, 0.0, 1.0);
   across = side * reach;
   line_colour = colour_by_lambda ? vec4(ramp(lambda), 1.0)
-                                 : texelFetch(palette, int(2u * body + 1u));
+                                 : texelFetch(palette, int(3u * body + 1u));
 }

@@ -60,6 +60,7 @@ struct BodySpec {
   Material material;
   std::string material_name;  // the name in "materials", empty for an inline or default one
   RugositySpec rugosity;
+  std::string color;  // "#rrggbb" or "#rgb" to draw it with; empty: the default palette
 };
 
 struct CameraSpec {

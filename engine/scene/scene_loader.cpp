@@ -414,12 +414,24 @@ void read_rugosity(Reader& r, const json& v, const std::string& path, std::size_
   }
 }
 
+// A colour: "#rrggbb" or "#rgb".
+void read_colour(Reader& r, const json& v, const std::string& path, std::string& colour) {
+  r.string(v, path, colour);
+  const bool hex = (colour.size() == 7 || colour.size() == 4) && colour[0] == '#' &&
+                   std::all_of(colour.begin() + 1, colour.end(), [](char d) {
+                     return std::isxdigit(static_cast<unsigned char>(d));
+                   });
+  if (v.is_string() && !hex) {
+    r.error(path, "expected a colour \"#rrggbb\" or \"#rgb\", got " + shown(v));
+  }
+}
+
 void read_body(Reader& r, const json& v, const std::string& path, const Scene& scene,
                BodySpec& body) {
   if (!r.is_object(v, path)) return;
   r.check_keys(v, path,
                {"name", "fixed", "shape", "position", "angle", "velocity", "angular_velocity",
-                "material", "rugosity"});
+                "material", "rugosity", "color"});
   if (v.contains("name")) {
     r.string(v["name"], child(path, "name"), body.name);
     if (v["name"].is_string() && body.name.empty()) {
@@ -474,6 +486,7 @@ void read_body(Reader& r, const json& v, const std::string& path, const Scene& s
   if (v.contains("rugosity")) {
     read_rugosity(r, v["rugosity"], child(path, "rugosity"), segments, body.rugosity);
   }
+  if (v.contains("color")) read_colour(r, v["color"], child(path, "color"), body.color);
 }
 
 void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& render) {
@@ -520,16 +533,7 @@ void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& 
     }
   }
   if (v.contains("background")) {
-    const std::string at = child(path, "background");
-    r.string(v["background"], at, render.background);
-    const std::string& c = render.background;
-    const bool hex = (c.size() == 7 || c.size() == 4) && c[0] == '#' &&
-                     std::all_of(c.begin() + 1, c.end(), [](char d) {
-                       return std::isxdigit(static_cast<unsigned char>(d));
-                     });
-    if (v["background"].is_string() && !hex) {
-      r.error(at, "expected a colour \"#rrggbb\" or \"#rgb\", got " + shown(v["background"]));
-    }
+    read_colour(r, v["background"], child(path, "background"), render.background);
   }
   if (v.contains("overlays")) {
     const json& overlays = v["overlays"];

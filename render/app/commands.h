@@ -29,6 +29,31 @@ struct SimulateOptions {
 // was simulated so far.
 int run_simulate(const SimulateOptions& options);
 
+struct RenderOptions {
+  std::string scene_path;
+  std::string output;  // clip.mp4, a PNG pattern like out/f_%04d.png, or (--strip) one PNG
+  std::string format;  // "mp4" or "png"; empty: from the output's name
+  std::string frames;  // "A:B", inclusive; empty: the whole clip
+  std::string size;    // "WxH"; empty: render.size
+  std::optional<double> fps;
+  std::optional<double> duration;
+  std::optional<std::string> accuracy;
+  int crf = 18;
+  std::string preset = "medium";
+  bool overwrite = false;  // -y
+  std::string backend = "osmesa";
+  std::string anti_aliasing = "shader";
+  std::optional<std::vector<std::string>> overlays;  // replaces render.overlays
+  std::size_t strip = 0;                             // > 0: one PNG of this many frames
+  int png_level = 1;
+  std::string png_filter = "up";
+};
+
+// Renders a scene to an MP4 clip, a PNG sequence or a film strip. Exit 2 for bad options or a
+// bad scene (nothing written), 1 for a GL, encoder or I/O failure, 130 on SIGINT after closing
+// the output so that it holds every frame rendered.
+int run_render(const RenderOptions& options);
+
 struct PlotOptions {
   std::string events_path;      // empty: no friction plot
   std::string trajectory_path;  // empty: no velocity plot

@@ -1,5 +1,5 @@
-// The rugosim command line (INTERFACE.md, "Command line"): validate, info, simulate and plot so
-// far; render and snapshot arrive with their layers.
+// The rugosim command line (INTERFACE.md, "Command line"): validate, info, simulate, render and
+// plot; snapshot arrives with its layer.
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
@@ -49,6 +49,70 @@ int main(int argc, char** argv) {
       "Files are written atomically: on an error none is created or truncated; on Ctrl-C the "
       "frames simulated so far are written and the exit code is 130.");
 
+  RenderOptions render_options;
+  double render_fps = 0.0, render_duration = 0.0;
+  std::string render_accuracy;
+  std::vector<std::string> overlays;
+  CLI::App* render = app.add_subcommand(
+      "render", "render a scene off-screen to an MP4 clip, a PNG sequence or a film strip");
+  render->add_option("SCENE", render_options.scene_path, "scene file (JSON)")->required();
+  render
+      ->add_option("-o,--output", render_options.output,
+                   "clip.mp4, a PNG pattern like out/f_%04d.png, or with --strip one PNG")
+      ->required()
+      ->type_name("OUT");
+  render
+      ->add_option("--format", render_options.format,
+                   "mp4 or png (default: from OUT: .mp4, or a pattern with %d)")
+      ->check(CLI::IsMember({"mp4", "png"}));
+  render
+      ->add_option("--frames", render_options.frames,
+                   "frames A:B, inclusive (default: 0 to duration × fps)")
+      ->type_name("A:B");
+  render->add_option("--size", render_options.size, "frame size (default: render.size)")
+      ->type_name("WxH");
+  render->add_option("--fps", render_fps, "frames per second (default: render.fps)")
+      ->check(CLI::PositiveNumber);
+  render->add_option("--duration", render_duration, "simulated time, s (default: world.duration)")
+      ->check(CLI::PositiveNumber);
+  render->add_option("--accuracy", render_accuracy, "draft, normal or precise")
+      ->check(CLI::IsMember({"draft", "normal", "precise"}));
+  render->add_option("--crf", render_options.crf, "MP4: x264 constant rate factor 0..51")
+      ->capture_default_str();
+  render->add_option("--preset", render_options.preset, "MP4: x264 preset")->capture_default_str();
+  render->add_flag("-y", render_options.overwrite, "overwrite OUT if it exists");
+  render->add_option("--backend", render_options.backend, "OpenGL backend: osmesa or egl")
+      ->capture_default_str();
+  render
+      ->add_option("--aa", render_options.anti_aliasing,
+                   "anti-aliasing: shader (edge coverage in the shaders), msaa (4x) or none")
+      ->capture_default_str();
+  render
+      ->add_option("--overlay", overlays,
+                   "overlays, replacing render.overlays: rugosity, contacts, velocity (comma "
+                   "separated; \"none\" for none)")
+      ->delimiter(',')
+      ->type_name("LIST");
+  render
+      ->add_option("--strip", render_options.strip,
+                   "write one PNG of N frames spread over the clip, side by side")
+      ->check(CLI::PositiveNumber)
+      ->type_name("N");
+  render->add_option("--png-level", render_options.png_level, "PNG: zlib level 0..9")
+      ->capture_default_str();
+  render
+      ->add_option("--png-filter", render_options.png_filter,
+                   "PNG: row filter none, sub, up, average, paeth or all (adaptive)")
+      ->capture_default_str();
+  render->footer(
+      "Examples:\n"
+      "  rugosim render scenes/figure12a.json -o out/figure12a.mp4\n"
+      "  rugosim render scenes/figure12a.json -o out/frames/f_%04d.png --frames 0:59 --size "
+      "1920x1080\n"
+      "  rugosim render scenes/figure12b.json -o out/strip.png --strip 6 --size 480x360\n"
+      "An existing OUT is kept unless -y is given. On Ctrl-C the frame in hand is finished, the "
+      "output is closed (a playable MP4) and the exit code is 130.");
+
   PlotOptions plot_options;
   bool no_contacts = false;
   CLI::App* plot = app.add_subcommand(
@@ -88,6 +152,16 @@ int main(int argc, char** argv) {
     if (simulate->count("--fps") > 0) sim.fps = fps;
     if (simulate->count("--accuracy") > 0) sim.accuracy = accuracy;
     return run_simulate(sim);
+  }
+  if (render->parsed()) {
+    if (render->count("--fps") > 0) render_options.fps = render_fps;
+    if (render->count("--duration") > 0) render_options.duration = render_duration;
+    if (render->count("--accuracy") > 0) render_options.accuracy = render_accuracy;
+    if (render->count("--overlay") > 0) {
+      std::erase(overlays, std::string("none"));
+      render_options.overlays = overlays;
+    }
+    return run_render(render_options);
   }
   if (plot->parsed()) {
     plot_options.contacts = !no_contacts;

@@ -8,9 +8,10 @@
 
 namespace rugosim::app {
 
-Progress::Progress(double total, std::FILE* out)
+Progress::Progress(double total, std::FILE* out, Unit unit)
     : total_(total),
       out_(out),
+      unit_(unit),
       terminal_(::isatty(::fileno(out)) != 0),
       start_(std::chrono::steady_clock::now()),
       last_print_(start_) {}
@@ -19,7 +20,7 @@ double Progress::wall_seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
 
-void Progress::update(double simulated) {
+void Progress::update(double simulated) {  // or frames
   const auto now = std::chrono::steady_clock::now();
   const double wall = wall_seconds();
   const double share = total_ > 0.0 ? std::clamp(simulated / total_, 0.0, 1.0) : 1.0;
@@ -31,8 +32,14 @@ void Progress::update(double simulated) {
     last_print_ = now;
     constexpr std::size_t kWidth = 30;
     const auto filled = static_cast<std::size_t>(share * static_cast<double>(kWidth));
-    fmt::print(out_, "\r[{}{}] {:.2f}/{:.2f} s  {:.3g}x  ETA {:.0f} s ", std::string(filled, '#'),
-               std::string(kWidth - filled, '-'), simulated, total_, speed, eta);
+    if (unit_ == Unit::kFrames) {
+      fmt::print(out_, "\r[{}{}] {:.0f}/{:.0f} frames  {:.3g}/s  ETA {:.0f} s ",
+                 std::string(filled, '#'), std::string(kWidth - filled, '-'), simulated, total_,
+                 speed, eta);
+    } else {
+      fmt::print(out_, "\r[{}{}] {:.2f}/{:.2f} s  {:.3g}x  ETA {:.0f} s ", std::string(filled, '#'),
+                 std::string(kWidth - filled, '-'), simulated, total_, speed, eta);
+    }
     std::fflush(out_);
     return;
   }
@@ -40,9 +47,17 @@ void Progress::update(double simulated) {
   if (tenth > last_tenth_ || now - last_print_ > std::chrono::seconds(10)) {
     last_tenth_ = tenth;
     last_print_ = now;
-    fmt::print(out_,
-               "progress: {:.2f}/{:.2f} s simulated ({:.0f}%), {:.3g}x real time, ETA {:.0f} s\n",
-               simulated, total_, 100.0 * share, speed, eta);
+    if (unit_ == Unit::kFrames) {
+      fmt::print(out_,
+                 "progress: {:.0f}/{:.0f} frames rendered ({:.0f}%), {:.3g} frames/s, ETA {:.0f} "
+                 "s\n",
+                 simulated, total_, 100.0 * share, speed, eta);
+    } else {
+      fmt::print(out_,
+                 "progress: {:.2f}/{:.2f} s simulated ({:.0f}%), {:.3g}x real time, ETA {:.0f} "
+                 "s\n",
+                 simulated, total_, 100.0 * share, speed, eta);
+    }
     std::fflush(out_);
   }
 }

@@ -9,10 +9,11 @@ namespace rugosim::app {
 
 class Progress {
  public:
-  // `total` is the simulated time to reach (s).
-  Progress(double total, std::FILE* out);
-  // The run has reached `simulated` (s).
-  void update(double simulated);
+  enum class Unit { kSimulatedSeconds, kFrames };
+  // `total` is the simulated time to reach (s), or the frames to render.
+  Progress(double total, std::FILE* out, Unit unit = Unit::kSimulatedSeconds);
+  // The run has reached `done` (s simulated, or frames).
+  void update(double done);
   // Ends the bar's line.
   void finish();
   double wall_seconds() const;
@@ -20,6 +21,7 @@ class Progress {
  private:
   double total_;
   std::FILE* out_;
+  Unit unit_;
   bool terminal_;
   std::chrono::steady_clock::time_point start_;
   std::chrono::steady_clock::time_point last_print_;

@@ -1,5 +1,4 @@
 #include <cmath>
-#include <csignal>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -11,33 +10,10 @@
 #include "render/app/commands.h"
 #include "render/app/progress.h"
 #include "render/app/scene_input.h"
+#include "render/app/sigint_guard.h"
 
 namespace rugosim::app {
 namespace {
-
-volatile std::sig_atomic_t g_interrupted = 0;
-
-extern "C" void on_sigint(int) {
-  g_interrupted = 1;
-}
-
-// Installs the SIGINT handler for the lifetime of a run, restoring the previous one after.
-class SigintGuard {
- public:
-  SigintGuard() {
-    g_interrupted = 0;
-    struct sigaction action {};
-    action.sa_handler = on_sigint;
-    sigemptyset(&action.sa_mask);
-    ::sigaction(SIGINT, &action, &previous_);
-  }
-  ~SigintGuard() { ::sigaction(SIGINT, &previous_, nullptr); }
-  SigintGuard(const SigintGuard&) = delete;
-  SigintGuard& operator=(const SigintGuard&) = delete;
-
- private:
-  struct sigaction previous_ {};
-};
 
 // Text for an AtomicFile, written out in chunks so memory stays bounded on long runs.
 class BufferedOutput {
@@ -90,7 +66,7 @@ int run_simulate(const SimulateOptions& o) {
     const SigintGuard sigint;
     Progress progress(static_cast<double>(last) / fps, stderr);
     std::size_t frame = 1;
-    for (; frame <= last && g_interrupted == 0; ++frame) {
+    for (; frame <= last && !sigint.interrupted(); ++frame) {
       world.advance_to(static_cast<double>(frame) / fps);
       if (std::string* t = trajectory.buffer()) append_trajectory_rows(*t, world, frame);
       if (std::string* e = events.buffer()) {
@@ -114,9 +90,9 @@ int run_simulate(const SimulateOptions& o) {
     fmt::print(stderr,
                "{}: {:.4g} s simulated in {:.3g} s wall ({} frames): {} steps, {} bisections, "
                "{} collisions, {} contacts, {} fallbacks, {} crossings\n",
-               g_interrupted != 0 ? "interrupted" : "done", world.time(), wall, frame, s.steps,
+               sigint.interrupted() ? "interrupted" : "done", world.time(), wall, frame, s.steps,
                s.bisections, s.collisions, s.contacts, s.fallbacks, s.crossings);
-    return g_interrupted != 0 ? kExitInterrupted : kExitOk;
+    return sigint.interrupted() ? kExitInterrupted : kExitOk;
   } catch (const std::runtime_error& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kExitFailure;

@@ -7,13 +7,14 @@
 
 #include "engine/geometry/tolerance_profile.h"
 #include "render/draw/palette.h"
+#include "render/draw/parity_fill.h"
 #include "render/draw/shader_program.h"
 
 namespace rugosim {
 namespace {
 
 constexpr int kMsaaSamples = 4;
-constexpr std::size_t kMaxBodies = 65535;  // body index + 1 must fit the 16-bit id target
+constexpr std::size_t kMaxBodies = std::size_t{1} << 22;  // indices exact in shader arithmetic
 
 struct FillVertex {
   float x, y;          // m, body frame
@@ -27,6 +28,19 @@ struct OutlineVertex {
   float side;
   float lambda;  // λ / largest λ of the scene
 };
+
+// The colour whose XOR with the background, byte by byte, is `fill`. Alpha 0: XOR leaves the
+// cleared alpha of 1 as it is.
+Rgba xor_key(const Rgba& background, const Rgba& fill) {
+  Rgba key;
+  for (std::size_t c = 0; c < 3; ++c) {
+    const auto a = static_cast<unsigned>(std::lround(background.channels[c] * 255.f));
+    const auto b = static_cast<unsigned>(std::lround(fill.channels[c] * 255.f));
+    key.channels[c] = static_cast<float>(a ^ b) / 255.f;
+  }
+  key.channels[3] = 0.f;
+  return key;
+}
 
 // Unit outward normal of the edge a → b of a counter-clockwise outline.
 Vec2 edge_normal(const Vec2& a, const Vec2& b) {
@@ -59,6 +73,15 @@ void set_attribute(const GlApi& gl, GLuint index, GLint size, GLenum type, GLsiz
   }
 }
 
+// The element buffer of the bound vertex array.
+void upload_indices(const GlApi& gl, GLuint& buffer, const std::vector<std::uint32_t>& indices) {
+  gl.GenBuffers(1, &buffer);
+  gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
+  gl.BufferData(GL_ELEMENT_ARRAY_BUFFER,
+                static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data(),
+                GL_STATIC_DRAW);
+}
+
 }  // namespace
 
 std::optional<AntiAliasing> parse_anti_aliasing(std::string_view name) {
@@ -81,28 +104,22 @@ std::string_view anti_aliasing_name(AntiAliasing aa) {
 }
 
 struct SceneRenderer::GpuState {
-  explicit GpuState(const GlApi& gl, bool msaa)
+  explicit GpuState(const GlApi& gl)
       : fill(gl, "body_fill.vert", "body_fill.frag"),
-        resolve(gl, "body_fill.vert", "body_resolve.frag",
-                msaa ? std::vector<std::string>{"MSAA 1"} : std::vector<std::string>{}),
         outline(gl, "outline.vert", "outline.frag"),
         overlay(gl, "overlay.vert", "overlay.frag") {}
 
   ShaderProgram fill;
-  ShaderProgram resolve;
   ShaderProgram outline;
   ShaderProgram overlay;
-  GLuint fill_vao = 0, fill_vbo = 0;
+  GLuint fill_vao = 0, fill_vbo = 0, fill_ibo = 0;
   GLsizei fill_count = 0;
-  GLuint outline_vao = 0, outline_vbo = 0;
+  GLuint outline_vao = 0, outline_vbo = 0, outline_ibo = 0;
   GLsizei outline_count = 0;
-  GLuint bounds_vao = 0, bounds_vbo = 0;  // per body, its box in the body frame (2 triangles)
-  GLsizei bounds_count = 0;
   GLuint overlay_vao = 0, overlay_vbo = 0;
   std::size_t overlay_capacity = 0;  // vertices the overlay buffer holds
   GLuint transform_buffer = 0, transform_texture = 0;
   GLuint palette_buffer = 0, palette_texture = 0;
-  GLuint id_texture = 0, id_framebuffer = 0;
   GLuint msaa_colour = 0, msaa_framebuffer = 0;  // MSAA only
   std::vector<float> transforms;                 // 8 floats per body, refilled each frame
 };
@@ -120,11 +137,11 @@ SceneRenderer::SceneRenderer(GlContext& context, std::vector<BodyLook> bodies,
     throw std::invalid_argument("renderer: the camera's frame size differs from the context's");
   }
   if (bodies_.size() > kMaxBodies) {
-    throw std::invalid_argument("renderer: at most 65535 bodies can be drawn");
+    throw std::invalid_argument("renderer: at most 4,194,304 bodies can be drawn");
   }
   settings_.detail.pixel_size = settings_.camera.pixel_size();
   context_.make_current();
-  gpu_ = std::make_unique<GpuState>(gl_, settings_.anti_aliasing == AntiAliasing::kMsaa);
+  gpu_ = std::make_unique<GpuState>(gl_);
   for (const BodyLook& body : bodies_)
     fixed_.push_back(body.fixed);
   build_meshes();
@@ -141,15 +158,14 @@ SceneRenderer::~SceneRenderer() {
     return;  // the objects go with the context
   }
   GpuState& g = *gpu_;
-  const GLuint arrays[] = {g.fill_vao, g.bounds_vao, g.outline_vao, g.overlay_vao};
-  gl_.DeleteVertexArrays(4, arrays);
-  const GLuint buffers[] = {g.fill_vbo,    g.bounds_vbo,       g.outline_vbo,
+  const GLuint arrays[] = {g.fill_vao, g.outline_vao, g.overlay_vao};
+  gl_.DeleteVertexArrays(3, arrays);
+  const GLuint buffers[] = {g.fill_vbo,    g.fill_ibo,         g.outline_vbo,   g.outline_ibo,
                             g.overlay_vbo, g.transform_buffer, g.palette_buffer};
-  gl_.DeleteBuffers(6, buffers);
-  const GLuint textures[] = {g.transform_texture, g.palette_texture, g.id_texture};
-  gl_.DeleteTextures(3, textures);
-  const GLuint framebuffers[] = {g.id_framebuffer, g.msaa_framebuffer};
-  gl_.DeleteFramebuffers(2, framebuffers);
+  gl_.DeleteBuffers(7, buffers);
+  const GLuint textures[] = {g.transform_texture, g.palette_texture};
+  gl_.DeleteTextures(2, textures);
+  gl_.DeleteFramebuffers(1, &g.msaa_framebuffer);
   gl_.DeleteRenderbuffers(1, &g.msaa_colour);
 }
 
@@ -161,61 +177,49 @@ void SceneRenderer::build_meshes() {
     profiles.push_back(ToleranceProfile(body.lambda));
     largest_lambda = std::max(largest_lambda, profiles.back().range().hi);
   }
+  // Indexed: each outline point is one fill vertex and two outline vertices, shaded once per
+  // frame (llvmpipe's vertex stage runs on one thread).
   std::vector<FillVertex> fill;
-  std::vector<FillVertex> bounds;
+  std::vector<std::uint32_t> fill_indices;
   std::vector<OutlineVertex> outline;
+  std::vector<std::uint32_t> outline_indices;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const BodyLook& body = bodies_[b];
     outlines_.push_back(make_detail_outline(body.curve, body.sigma, body.seed, settings_.detail));
     const std::vector<Vec2>& p = outlines_.back().points;
     const std::vector<double>& u = outlines_.back().param;
     const std::size_t n = p.size();
-    Vec2 anchor = Vec2::Zero();
-    Vec2 lo = p.front(), hi = p.front();
-    for (const Vec2& q : p) {
-      anchor += q;
-      lo = lo.cwiseMin(q);
-      hi = hi.cwiseMax(q);
-    }
-    anchor /= static_cast<double>(n);
     const auto body_index = static_cast<std::uint32_t>(b);
-    // The box the resolve pass covers, a pixel wider for the rasteriser's rounding.
-    const double pad = settings_.detail.pixel_size;
-    const Vec2 corners[4] = {Vec2(lo.x() - pad, lo.y() - pad), Vec2(hi.x() + pad, lo.y() - pad),
-                             Vec2(lo.x() - pad, hi.y() + pad), Vec2(hi.x() + pad, hi.y() + pad)};
-    for (const int c : {0, 1, 2, 2, 1, 3}) {
-      bounds.push_back(FillVertex{static_cast<float>(corners[c].x()),
-                                  static_cast<float>(corners[c].y()), body_index});
-    }
-    auto fill_vertex = [&](const Vec2& q) {
+    const ParityFill parity = parity_fill(p);
+    const auto fill_base = static_cast<std::uint32_t>(fill.size());
+    for (std::size_t i = 0; i <= n; ++i) {
+      const Vec2& q = i < n ? p[i] : parity.anchor;
       fill.push_back(FillVertex{static_cast<float>(q.x()), static_cast<float>(q.y()), body_index});
-    };
-    std::vector<OutlineVertex> ring;  // two per point: inside, outside
+    }
+    for (const std::uint32_t i : parity.indices)
+      fill_indices.push_back(fill_base + i);
+    const auto ring = static_cast<std::uint32_t>(outline.size());  // two per point: in, out
     for (std::size_t i = 0; i < n; ++i) {
       const Vec2& q = p[i];
-      fill_vertex(anchor);
-      fill_vertex(q);
-      fill_vertex(p[(i + 1) % n]);
       const Vec2 m = miter(p[(i + n - 1) % n], q, p[(i + 1) % n]);
       const auto j = static_cast<std::size_t>(u[i]) % body.curve.size();
       const double lambda = profiles[b].at(j, u[i] - std::floor(u[i]));
       const float level = largest_lambda > 0.0 ? static_cast<float>(lambda / largest_lambda) : 0.f;
       for (const float side : {-1.f, 1.f}) {
-        ring.push_back(OutlineVertex{static_cast<float>(q.x()), static_cast<float>(q.y()),
-                                     body_index, static_cast<float>(m.x()),
-                                     static_cast<float>(m.y()), side, level});
+        outline.push_back(OutlineVertex{static_cast<float>(q.x()), static_cast<float>(q.y()),
+                                        body_index, static_cast<float>(m.x()),
+                                        static_cast<float>(m.y()), side, level});
       }
     }
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t k = (i + 1) % n;
-      for (const std::size_t v : {2 * i, 2 * i + 1, 2 * k, 2 * k, 2 * i + 1, 2 * k + 1}) {
-        outline.push_back(ring[v]);
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const std::uint32_t k = (i + 1) % static_cast<std::uint32_t>(n);
+      for (const std::uint32_t v : {2 * i, 2 * i + 1, 2 * k, 2 * k, 2 * i + 1, 2 * k + 1}) {
+        outline_indices.push_back(ring + v);
       }
     }
   }
-  g.fill_count = static_cast<GLsizei>(fill.size());
-  g.bounds_count = static_cast<GLsizei>(bounds.size());
-  g.outline_count = static_cast<GLsizei>(outline.size());
+  g.fill_count = static_cast<GLsizei>(fill_indices.size());
+  g.outline_count = static_cast<GLsizei>(outline_indices.size());
 
   gl_.GenVertexArrays(1, &g.fill_vao);
   gl_.BindVertexArray(g.fill_vao);
@@ -225,15 +229,7 @@ void SceneRenderer::build_meshes() {
                  fill.data(), GL_STATIC_DRAW);
   set_attribute(gl_, 0, 2, GL_FLOAT, sizeof(FillVertex), offsetof(FillVertex, x));
   set_attribute(gl_, 1, 1, GL_UNSIGNED_INT, sizeof(FillVertex), offsetof(FillVertex, body));
-
-  gl_.GenVertexArrays(1, &g.bounds_vao);
-  gl_.BindVertexArray(g.bounds_vao);
-  gl_.GenBuffers(1, &g.bounds_vbo);
-  gl_.BindBuffer(GL_ARRAY_BUFFER, g.bounds_vbo);
-  gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bounds.size() * sizeof(FillVertex)),
-                 bounds.data(), GL_STATIC_DRAW);
-  set_attribute(gl_, 0, 2, GL_FLOAT, sizeof(FillVertex), offsetof(FillVertex, x));
-  set_attribute(gl_, 1, 1, GL_UNSIGNED_INT, sizeof(FillVertex), offsetof(FillVertex, body));
+  upload_indices(gl_, g.fill_ibo, fill_indices);
 
   gl_.GenVertexArrays(1, &g.outline_vao);
   gl_.BindVertexArray(g.outline_vao);
@@ -247,6 +243,7 @@ void SceneRenderer::build_meshes() {
   set_attribute(gl_, 2, 2, GL_FLOAT, kStride, offsetof(OutlineVertex, miter_x));
   set_attribute(gl_, 3, 1, GL_FLOAT, kStride, offsetof(OutlineVertex, side));
   set_attribute(gl_, 4, 1, GL_FLOAT, kStride, offsetof(OutlineVertex, lambda));
+  upload_indices(gl_, g.outline_ibo, outline_indices);
 
   gl_.GenVertexArrays(1, &g.overlay_vao);
   gl_.BindVertexArray(g.overlay_vao);
@@ -260,12 +257,14 @@ void SceneRenderer::build_meshes() {
 
   gl_.BindVertexArray(0);
 
-  // Per body: transform (2 texels, refilled each frame) and colours (fill, outline).
+  // Per body: transform (2 texels, refilled each frame) and colours: fill, outline, and the key
+  // the fill pass XORs onto the background (shaders/body_fill.frag), exact in 8 bits.
   g.transforms.assign(bodies_.size() * 8, 0.f);
   std::vector<float> palette;
-  palette.reserve(bodies_.size() * 8);
+  palette.reserve(bodies_.size() * 12);
   for (const BodyLook& body : bodies_) {
-    for (const Rgba& c : {body.fill, outline_colour(body.fill)}) {
+    for (const Rgba& c :
+         {body.fill, outline_colour(body.fill), xor_key(settings_.background, body.fill)}) {
       palette.insert(palette.end(), c.channels.begin(), c.channels.end());
     }
   }
@@ -291,28 +290,10 @@ void SceneRenderer::create_targets() {
   const bool msaa = settings_.anti_aliasing == AntiAliasing::kMsaa;
   if (msaa) {
     GLint samples = 0;
-    gl_.GetIntegerv(GL_MAX_INTEGER_SAMPLES, &samples);
+    gl_.GetIntegerv(GL_MAX_SAMPLES, &samples);
     if (samples < kMsaaSamples) {
-      throw GlUnavailable(
-          "renderer: this GL has no 4x MSAA of integer targets (anti-aliasing "
-          "\"shader\" needs none)");
+      throw GlUnavailable("renderer: this GL has no 4x MSAA (anti-aliasing \"shader\" needs none)");
     }
-  }
-  const GLenum id_target = msaa ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
-  gl_.GenTextures(1, &g.id_texture);
-  gl_.BindTexture(id_target, g.id_texture);
-  if (msaa) {
-    gl_.TexStorage2DMultisample(id_target, kMsaaSamples, GL_R16UI, w, h, GL_TRUE);
-  } else {
-    gl_.TexStorage2D(id_target, 1, GL_R16UI, w, h);
-    gl_.TexParameteri(id_target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl_.TexParameteri(id_target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  }
-  gl_.GenFramebuffers(1, &g.id_framebuffer);
-  gl_.BindFramebuffer(GL_FRAMEBUFFER, g.id_framebuffer);
-  gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, id_target, g.id_texture, 0);
-  if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    throw GlUnavailable("renderer: the body-index target is incomplete");
   }
   if (msaa) {
     gl_.GenRenderbuffers(1, &g.msaa_colour);
@@ -369,40 +350,25 @@ void SceneRenderer::draw(const FrameSnapshot& frame) {
   gl_.Viewport(0, 0, context_.width(), context_.height());
   gl_.Disable(GL_BLEND);
 
-  // 1. Fills: body index by XOR.
-  gl_.BindFramebuffer(GL_FRAMEBUFFER, g.id_framebuffer);
-  const GLuint zero[4] = {0, 0, 0, 0};
-  gl_.ClearBufferuiv(GL_COLOR, 0, zero);
+  // 1. Background by a clear, then every fill in one draw by XOR.
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, msaa ? g.msaa_framebuffer : context_.framebuffer());
+  const auto& bg = settings_.background.channels;
+  const GLfloat background[4] = {bg[0], bg[1], bg[2], 1.f};
+  gl_.ClearBufferfv(GL_COLOR, 0, background);
   gl_.Enable(GL_COLOR_LOGIC_OP);
   gl_.LogicOp(GL_XOR);
   g.fill.use();
   gl_.ActiveTexture(GL_TEXTURE0);
   gl_.BindTexture(GL_TEXTURE_BUFFER, g.transform_texture);
   gl_.Uniform1i(g.fill.uniform("transforms"), 0);
-  gl_.BindVertexArray(g.fill_vao);
-  gl_.DrawArrays(GL_TRIANGLES, 0, g.fill_count);
-  gl_.Disable(GL_COLOR_LOGIC_OP);
-
-  // 2. Background by a clear (the cheapest way to fill pixels), then body index → colour over
-  // each body's box only.
-  gl_.BindFramebuffer(GL_FRAMEBUFFER, msaa ? g.msaa_framebuffer : context_.framebuffer());
-  const auto& bg = settings_.background.channels;
-  const GLfloat background[4] = {bg[0], bg[1], bg[2], 1.f};
-  gl_.ClearBufferfv(GL_COLOR, 0, background);
-  g.resolve.use();
-  gl_.ActiveTexture(GL_TEXTURE2);
-  gl_.BindTexture(GL_TEXTURE_BUFFER, g.transform_texture);
-  gl_.Uniform1i(g.resolve.uniform("transforms"), 2);
-  gl_.ActiveTexture(GL_TEXTURE0);
-  gl_.BindTexture(msaa ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, g.id_texture);
-  gl_.Uniform1i(g.resolve.uniform("ids"), 0);
   gl_.ActiveTexture(GL_TEXTURE1);
   gl_.BindTexture(GL_TEXTURE_BUFFER, g.palette_texture);
-  gl_.Uniform1i(g.resolve.uniform("palette"), 1);
-  gl_.BindVertexArray(g.bounds_vao);
-  gl_.DrawArrays(GL_TRIANGLES, 0, g.bounds_count);
+  gl_.Uniform1i(g.fill.uniform("palette"), 1);
+  gl_.BindVertexArray(g.fill_vao);
+  gl_.DrawElements(GL_TRIANGLES, g.fill_count, GL_UNSIGNED_INT, nullptr);
+  gl_.Disable(GL_COLOR_LOGIC_OP);
 
-  // 3. Outlines, blended over the fills.
+  // 2. Outlines, blended over the fills.
   gl_.Enable(GL_BLEND);
   gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   g.outline.use();
@@ -420,9 +386,9 @@ void SceneRenderer::draw(const FrameSnapshot& frame) {
   gl_.Uniform1f(g.outline.uniform("fringe"), fringe);
   gl_.Uniform1i(g.outline.uniform("colour_by_lambda"), by_lambda ? 1 : 0);
   gl_.BindVertexArray(g.outline_vao);
-  gl_.DrawArrays(GL_TRIANGLES, 0, g.outline_count);
+  gl_.DrawElements(GL_TRIANGLES, g.outline_count, GL_UNSIGNED_INT, nullptr);
 
-  // 4. Overlays.
+  // 3. Overlays.
   if (settings_.overlays.contacts || settings_.overlays.velocity) {
     overlay_builder_.clear();
     overlay_builder_.add_frame(frame, fixed_, settings_.overlays);

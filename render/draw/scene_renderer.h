@@ -1,11 +1,10 @@
 // Draws frames of a scene off-screen (DESIGN.md, "Rendering"). Every body's detailed outline
 // (rugosity_detail.h) is made and uploaded once, in the body's frame; each frame sends only the
-// bodies' transforms and the overlays, and draws everything in four batched calls:
-//   1. fills: all bodies' triangle fans into an integer target with XOR (body_fill.frag says
-//      why that fills concave outlines exactly without triangulating them);
-//   2. resolve: body index → colour, over each body's box, on a cleared background;
-//   3. outlines: quads along every outline, in the body's colour or by λ (overlay `rugosity`);
-//   4. overlays: contacts and velocities.
+// bodies' transforms and the overlays, and draws everything in three batched calls:
+//   1. fills: the background cleared, then every body's parity triangles XORed on in one draw
+//      (shaders/body_fill.frag says why that fills concave outlines exactly);
+//   2. outlines: quads along every outline, in the body's colour or by λ (overlay `rugosity`);
+//   3. overlays: contacts and velocities.
 // Edges are anti-aliased either by the shaders (coverage ramps on outlines and overlays, which
 // cover the fills' edges) or by 4× MSAA of every pass.
 #pragma once

@@ -62,6 +62,7 @@ void GlApi::load(const std::function<void*(const char*)>& get) {
   RUGOSIM_GL(EnableVertexAttribArray);
   RUGOSIM_GL(VertexAttribPointer);
   RUGOSIM_GL(DrawArrays);
+  RUGOSIM_GL(DrawElements);
   RUGOSIM_GL(Enable);
   RUGOSIM_GL(Disable);
   RUGOSIM_GL(BlendFunc);

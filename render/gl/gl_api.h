@@ -54,6 +54,7 @@ struct GlApi {
   PFNGLENABLEVERTEXATTRIBARRAYPROC EnableVertexAttribArray = nullptr;
   PFNGLVERTEXATTRIBPOINTERPROC VertexAttribPointer = nullptr;
   PFNGLDRAWARRAYSPROC DrawArrays = nullptr;
+  PFNGLDRAWELEMENTSPROC DrawElements = nullptr;
   PFNGLENABLEPROC Enable = nullptr;
   PFNGLDISABLEPROC Disable = nullptr;
   PFNGLBLENDFUNCPROC BlendFunc = nullptr;

@@ -1,0 +1,222 @@
+// Rendering figure12a (the quick start's scene: eight rocks falling into a container), measured
+// against baselines in the same run (bench/ratio_reporter.h):
+//
+//   frame/<aa>/<height>     rendering alone (draw + read back) of the clip's frames, per frame,
+//                           against frame/baseline: a bare clear and read back of the same size
+//                           (the least any GL frame costs here).
+//   mp4/rugosim/<height>    `rugosim render figure12a -o clip.mp4` end to end (load, simulate,
+//                           render, encode), against mp4/baseline: the `ffmpeg` command
+//                           encoding the same frames from raw RGBA with the same settings
+//                           (libx264, crf 18, preset medium, a keyframe a second, yuv420p,
+//                           fragmented MP4). Ratio ≤ 1.11 means ≥ 0.9 of ffmpeg's throughput.
+//   png/rugosim/<height>    `rugosim render` to a PNG sequence, against png/baseline: `ffmpeg`
+//                           writing the same frames as PNGs from raw RGBA (its defaults).
+//
+// Counters: frames_per_s for every run. The raw frames for ffmpeg are made once, by the same
+// renderer, in a temporary folder.
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <fmt/core.h>
+
+#include "engine/dynamics/frame_snapshot.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/scene/scene_world.h"
+#include "ratio_reporter.h"
+#include "render/app/render_scene.h"
+#include "render/draw/scene_renderer.h"
+#include "render/gl/gl_context.h"
+
+namespace rugosim {
+namespace {
+
+constexpr std::size_t kFrames = 90;  // 3 s at 30 fps: the rocks falling, bouncing and settling
+
+const std::string kScene = std::string(RUGOSIM_SOURCE_DIR) + "/scenes/figure12a.json";
+const std::filesystem::path kWork = std::filesystem::temp_directory_path() / "rugosim_bench_render";
+
+int width_for(std::int64_t height) {
+  return static_cast<int>(height * 16 / 9);
+}
+
+struct Clip {
+  Scene scene;
+  std::unique_ptr<World> world;
+  std::vector<FrameSnapshot> frames;
+};
+
+// The scene simulated once; every benchmark draws the same snapshots.
+const Clip& clip() {
+  static const Clip loaded = [] {
+    Clip c;
+    c.scene = load_scene_file(kScene).scene;
+    SceneWorld built = build_world(c.scene, kScene);
+    c.world = std::move(built.world);
+    const double fps = c.scene.render.fps;
+    for (std::size_t k = 0; k < kFrames; ++k) {
+      if (k > 0) c.world->advance_to(static_cast<double>(k) / fps);
+      c.frames.push_back(take_snapshot(*c.world, k));
+      c.world->clear_events();
+    }
+    return c;
+  }();
+  return loaded;
+}
+
+RenderSettings settings_for(const Clip& c, int width, int height, AntiAliasing aa) {
+  RenderSettings s;
+  s.camera = app::fit_clip_camera(*c.world, c.frames, width, height);
+  s.background = *parse_hex_color(c.scene.render.background);
+  s.anti_aliasing = aa;
+  return s;
+}
+
+void report_fps(benchmark::State& state, std::size_t frames_per_iteration) {
+  state.counters["frames_per_s"] = benchmark::Counter(
+      static_cast<double>(frames_per_iteration), benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void frame_baseline(benchmark::State& state) {
+  const int height = static_cast<int>(state.range(0));
+  std::unique_ptr<GlContext> context =
+      GlContext::create(GlBackend::kOsmesa, width_for(height), height);
+  const GlApi& gl = context->gl();
+  for (auto _ : state) {
+    gl.BindFramebuffer(GL_FRAMEBUFFER, context->framebuffer());
+    gl.ClearColor(0.9f, 0.9f, 0.9f, 1.f);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+    std::vector<std::uint8_t> pixels = context->read_pixels();
+    benchmark::DoNotOptimize(pixels.data());
+  }
+  report_fps(state, 1);
+}
+
+void frame_render(benchmark::State& state, AntiAliasing aa) {
+  const Clip& c = clip();
+  const int height = static_cast<int>(state.range(0));
+  std::unique_ptr<GlContext> context =
+      GlContext::create(GlBackend::kOsmesa, width_for(height), height);
+  SceneRenderer renderer(*context, app::body_looks(c.scene, *c.world),
+                         settings_for(c, width_for(height), height, aa));
+  Image image;
+  std::size_t k = 0;
+  for (auto _ : state) {
+    renderer.draw(c.frames[k++ % c.frames.size()]);
+    renderer.read(image);
+    benchmark::DoNotOptimize(image.rgba.data());
+  }
+  report_fps(state, 1);
+}
+
+// The clip's frames as raw RGBA for ffmpeg, made once per size.
+std::string raw_frames(int width, int height) {
+  const std::filesystem::path path = kWork / fmt::format("frames_{}x{}.rgba", width, height);
+  if (std::filesystem::exists(path)) return path.string();
+  std::filesystem::create_directories(kWork);
+  const Clip& c = clip();
+  std::unique_ptr<GlContext> context = GlContext::create(GlBackend::kOsmesa, width, height);
+  SceneRenderer renderer(*context, app::body_looks(c.scene, *c.world),
+                         settings_for(c, width, height, AntiAliasing::kShader));
+  std::ofstream out(path, std::ios::binary);
+  Image image;
+  for (const FrameSnapshot& frame : c.frames) {
+    renderer.draw(frame);
+    renderer.read(image);
+    out.write(reinterpret_cast<const char*>(image.rgba.data()),
+              static_cast<std::streamsize>(image.rgba.size()));
+  }
+  return path.string();
+}
+
+void run_command(benchmark::State& state, const std::string& command) {
+  if (std::system(command.c_str()) != 0) state.SkipWithError(("failed: " + command).c_str());
+}
+
+void ffmpeg_encode(benchmark::State& state, bool png) {
+  if (std::system("ffmpeg -version > /dev/null 2>&1") != 0) {
+    state.SkipWithError("ffmpeg is not on PATH (Debian package ffmpeg)");
+    return;
+  }
+  const int height = static_cast<int>(state.range(0));
+  const int width = width_for(height);
+  const std::string raw = raw_frames(width, height);
+  const std::string input =
+      fmt::format("ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s {}x{} -r 30 -i {} ",
+                  width, height, raw);
+  const std::string output =
+      png ? fmt::format("{}/ffmpeg_%04d.png", kWork.string())
+          : fmt::format(
+                "-c:v libx264 -crf 18 -preset medium -g 30 -pix_fmt yuv420p "
+                "-movflags frag_keyframe+empty_moov+default_base_moof {}/ffmpeg.mp4",
+                kWork.string());
+  for (auto _ : state)
+    run_command(state, input + output);
+  report_fps(state, kFrames);
+}
+
+void rugosim_render(benchmark::State& state, bool png) {
+  const int height = static_cast<int>(state.range(0));
+  const std::string out =
+      png ? kWork.string() + "/rugosim_%04d.png" : kWork.string() + "/rugosim.mp4";
+  std::filesystem::create_directories(kWork);
+  const std::string command =
+      fmt::format("{} render {} -o {} -y --frames 0:{} --size {}x{} 2> /dev/null", RUGOSIM_PROGRAM,
+                  kScene, out, kFrames - 1, width_for(height), height);
+  for (auto _ : state)
+    run_command(state, command);
+  report_fps(state, kFrames);
+}
+
+void register_all() {
+  for (const std::int64_t height : {720, 1080}) {
+    benchmark::RegisterBenchmark("frame/baseline", frame_baseline)
+        ->Arg(height)
+        ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+    for (const AntiAliasing aa :
+         {AntiAliasing::kShader, AntiAliasing::kMsaa, AntiAliasing::kNone}) {
+      benchmark::RegisterBenchmark(fmt::format("frame/{}", anti_aliasing_name(aa)).c_str(),
+                                   [aa](benchmark::State& s) { frame_render(s, aa); })
+          ->Arg(height)
+          ->UseRealTime()
+          ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+    }
+    for (const bool png : {false, true}) {
+      const std::string family = png ? "png" : "mp4";
+      benchmark::RegisterBenchmark((family + "/baseline").c_str(),
+                                   [png](benchmark::State& s) { ffmpeg_encode(s, png); })
+          ->Arg(height)
+          ->Iterations(1)
+          ->Repetitions(3)
+          ->UseRealTime()
+          ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark((family + "/rugosim").c_str(),
+                                   [png](benchmark::State& s) { rugosim_render(s, png); })
+          ->Arg(height)
+          ->Iterations(1)
+          ->Repetitions(3)
+          ->UseRealTime()
+          ->UseRealTime()
+        ->Unit(benchmark::kMillisecond);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rugosim
+
+int main(int argc, char** argv) {
+  rugosim::register_all();
+  const int code = rugosim::bench::run_with_ratios(argc, argv);
+  std::filesystem::remove_all(rugosim::kWork);
+  return code;
+}

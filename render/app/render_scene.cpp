@@ -1,0 +1,73 @@
+#include "render/app/render_scene.h"
+
+#include "engine/core/random.h"
+#include "render/draw/palette.h"
+
+namespace rugosim::app {
+namespace {
+
+constexpr std::uint64_t kDetailStream = 0x6465'7461'696c;  // "detail": apart from the shapes'
+
+}  // namespace
+
+std::vector<BodyLook> body_looks(const Scene& scene, const World& world) {
+  std::vector<BodyLook> looks;
+  std::size_t moving = 0;
+  for (std::size_t i = 0; i < world.body_count(); ++i) {
+    const RigidBody& body = world.body(i);
+    const std::vector<double>& lambda = body.shape().tolerances().segment_tolerances();
+    std::vector<double> sigma;
+    sigma.reserve(lambda.size());
+    for (const double l : lambda)
+      sigma.push_back(l / scene.q);
+    const BodySpec* spec = i < scene.bodies.size() ? &scene.bodies[i] : nullptr;
+    std::optional<Rgba> fill;
+    if (spec != nullptr && !spec->color.empty()) fill = parse_hex_color(spec->color);
+    if (!fill) fill = default_body_colour(moving, body.fixed());
+    if (!body.fixed()) ++moving;
+    looks.push_back(BodyLook{body.curve(), std::move(sigma), lambda, *fill, body.fixed(),
+                             derive_seed(derive_seed(scene.seed, kDetailStream), i)});
+  }
+  return looks;
+}
+
+std::optional<Camera> scene_camera(const Scene& scene, int width_px, int height_px) {
+  if (scene.render.camera.automatic) return std::nullopt;
+  Camera camera;
+  camera.center = scene.render.camera.center;
+  camera.height = scene.render.camera.height;
+  camera.width_px = width_px;
+  camera.height_px = height_px;
+  return camera;
+}
+
+Camera fit_clip_camera(const World& world, const std::vector<FrameSnapshot>& frames, int width_px,
+                       int height_px) {
+  Aabb bounds;
+  for (const FrameSnapshot& frame : frames) {
+    for (std::size_t i = 0; i < frame.bodies.size() && i < world.body_count(); ++i) {
+      bounds.extend(world.body(i).shape().world_bounds(frame.bodies[i].placement));
+    }
+  }
+  return fit_camera(bounds, width_px, height_px);
+}
+
+std::optional<Overlays> parse_overlays(const std::vector<std::string>& names,
+                                       std::string* unknown) {
+  Overlays overlays;
+  for (const std::string& name : names) {
+    if (name == "rugosity") {
+      overlays.rugosity = true;
+    } else if (name == "contacts") {
+      overlays.contacts = true;
+    } else if (name == "velocity") {
+      overlays.velocity = true;
+    } else {
+      if (unknown != nullptr) *unknown = name;
+      return std::nullopt;
+    }
+  }
+  return overlays;
+}
+
+}  // namespace rugosim::app

@@ -1,0 +1,35 @@
+// From a loaded scene to what the renderer needs: how each body looks (its curve, σ and λ,
+// colour, detail seed) and the camera of a clip (the scene's, or `auto`: every body over every
+// frame of the clip, fitted).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/dynamics/frame_snapshot.h"
+#include "engine/dynamics/world.h"
+#include "engine/scene/scene.h"
+#include "render/draw/camera.h"
+#include "render/draw/overlay_geometry.h"
+#include "render/draw/scene_renderer.h"
+
+namespace rugosim::app {
+
+// One look per body of the World, in its order: the scene's colour or the default palette,
+// σ = λ / q per segment of the body's stored curve, a detail seed from the scene's seed.
+std::vector<BodyLook> body_looks(const Scene& scene, const World& world);
+
+// The explicit camera of the scene's render.camera, or nullopt for "auto".
+std::optional<Camera> scene_camera(const Scene& scene, int width_px, int height_px);
+
+// The camera that shows every body in every snapshot (their bands included).
+Camera fit_clip_camera(const World& world, const std::vector<FrameSnapshot>& frames, int width_px,
+                       int height_px);
+
+// Overlay names ("rugosity", "contacts", "velocity"); nullopt names the first unknown one in
+// `unknown`.
+std::optional<Overlays> parse_overlays(const std::vector<std::string>& names, std::string* unknown);
+
+}  // namespace rugosim::app

@@ -1,0 +1,110 @@
+#include "render/pipeline/render_pipeline.h"
+
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <utility>
+
+#include "render/pipeline/bounded_queue.h"
+
+namespace rugosim {
+namespace {
+
+struct RenderedFrame {
+  Image image;
+  std::size_t frame = 0;
+};
+
+// The first exception of any stage; the others are consequences of stopping.
+class FirstError {
+ public:
+  void capture() {
+    std::lock_guard lock(mutex_);
+    if (!error_) error_ = std::current_exception();
+  }
+  bool any() {
+    std::lock_guard lock(mutex_);
+    return error_ != nullptr;
+  }
+  void rethrow() {
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  std::mutex mutex_;
+  std::exception_ptr error_;
+};
+
+}  // namespace
+
+PipelineResult run_pipeline(const PipelineStages& stages) {
+  BoundedQueue<FrameSnapshot> snapshots(stages.snapshots_ahead);
+  BoundedQueue<RenderedFrame> rendered(stages.images_in_flight);
+  BoundedQueue<Image> spare(stages.images_in_flight + 1);  // images to reuse
+  for (std::size_t i = 0; i < stages.images_in_flight + 1; ++i)
+    spare.push(Image());
+  FirstError error;
+  std::atomic<bool> stop{false};
+  auto interrupted = [&] {
+    return stages.interrupted != nullptr && stages.interrupted->load(std::memory_order_relaxed);
+  };
+  auto halt = [&] {
+    stop = true;
+    snapshots.close();
+    rendered.close();
+    spare.close();
+  };
+
+  std::thread simulation([&] {
+    try {
+      while (!stop && !interrupted()) {
+        std::optional<FrameSnapshot> next = stages.next_snapshot();
+        if (!next || !snapshots.push(std::move(*next))) break;
+      }
+    } catch (...) {
+      error.capture();
+      halt();
+    }
+    snapshots.close();
+  });
+
+  std::thread renderer_thread([&] {
+    try {
+      std::unique_ptr<FrameRenderer> renderer = stages.make_renderer();
+      // After an interruption the frame in hand is finished and passed on; queued ones are not.
+      while (!stop && !interrupted()) {
+        std::optional<FrameSnapshot> snapshot = snapshots.pop();
+        if (!snapshot) break;
+        std::optional<Image> image = spare.pop();
+        if (!image) break;
+        renderer->render(*snapshot, *image);
+        if (!rendered.push(RenderedFrame{std::move(*image), snapshot->frame})) break;
+      }
+    } catch (...) {
+      error.capture();
+      halt();
+    }
+    // The simulation may be waiting on a full queue: let it go.
+    snapshots.close();
+    rendered.close();
+  });
+
+  PipelineResult result;
+  try {
+    while (std::optional<RenderedFrame> frame = rendered.pop()) {
+      stages.consume(frame->image, frame->frame);
+      ++result.frames;
+      spare.push(std::move(frame->image));
+    }
+  } catch (...) {
+    error.capture();
+    halt();
+  }
+  simulation.join();
+  renderer_thread.join();
+  error.rethrow();
+  result.interrupted = interrupted();
+  return result;
+}
+
+}  // namespace rugosim
