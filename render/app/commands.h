@@ -47,6 +47,7 @@ struct RenderOptions {
   std::size_t strip = 0;                             // > 0: one PNG of this many frames
   int png_level = 1;
   std::string png_filter = "up";
+  std::optional<int> gl_threads;  // llvmpipe rasteriser threads (LP_NUM_THREADS)
 };
 
 // Renders a scene to an MP4 clip, a PNG sequence or a film strip. Exit 2 for bad options or a

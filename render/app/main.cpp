@@ -98,6 +98,12 @@ int main(int argc, char** argv) {
                    "write one PNG of N frames spread over the clip, side by side")
       ->check(CLI::PositiveNumber)
       ->type_name("N");
+  int gl_threads = 0;
+  render
+      ->add_option("--gl-threads", gl_threads,
+                   "llvmpipe rasteriser threads (LP_NUM_THREADS); default 0: the render thread "
+                   "alone, leaving the cores to the encoder")
+      ->check(CLI::Range(0, 64));
   render->add_option("--png-level", render_options.png_level, "PNG: zlib level 0..9")
       ->capture_default_str();
   render
@@ -157,6 +163,7 @@ int main(int argc, char** argv) {
     if (render->count("--fps") > 0) render_options.fps = render_fps;
     if (render->count("--duration") > 0) render_options.duration = render_duration;
     if (render->count("--accuracy") > 0) render_options.accuracy = render_accuracy;
+    if (render->count("--gl-threads") > 0) render_options.gl_threads = gl_threads;
     if (render->count("--overlay") > 0) {
       std::erase(overlays, std::string("none"));
       render_options.overlays = overlays;

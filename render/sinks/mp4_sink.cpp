@@ -239,7 +239,7 @@ Mp4Sink::Mp4Sink(std::string path, int width, int height, const Mp4Options& opti
   e.check(av_frame_get_buffer(e.frame.get(), 0), "allocating a frame");
 
   e.scaler.reset(sws_getContext(width, height, AV_PIX_FMT_RGBA, width, height, AV_PIX_FMT_YUV420P,
-                                SWS_BICUBIC | SWS_ACCURATE_RND, nullptr, nullptr, nullptr));
+                                SWS_BICUBIC, nullptr, nullptr, nullptr));
   if (!e.scaler) e.fail("libswscale cannot convert RGBA to yuv420p");
   // Full-range RGB in, BT.709 limited-range YUV out: the same matrix as the stream's tags, so
   // a player turns the YUV back into the rendered colours.
