@@ -18,6 +18,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # the pile benchmark's competitor
   libbox2d-dev
+  # the render benchmark's baseline: the ffmpeg command
+  ffmpeg
   # rugosim plot: figures drawn by gnuplot
   gnuplot-nox
   # the scene-loader fuzz target: clang with libFuzzer and the sanitizer runtimes

@@ -78,7 +78,10 @@ void OverlayBuilder::add_frame(const FrameSnapshot& frame, const std::vector<boo
         const Rgba& colour = collisions ? kCollision : kContact;
         const Vec2 at = camera_.to_pixels(e.point);
         const Vec2 tangent(-e.normal.y(), e.normal.x());
-        const Vec2 impulse = e.jn * e.normal + e.jt * tangent;
+        // The impulse on A; when A is fixed, the one on B (−J), so strokes show how moving
+        // bodies are pushed.
+        const double sign = e.body_a < fixed.size() && fixed[e.body_a] ? -1.0 : 1.0;
+        const Vec2 impulse = sign * (e.jn * e.normal + e.jt * tangent);
         const double size = impulse.norm();
         if (size > 0.0) {
           const Vec2 direction(impulse.x() / size, impulse.y() / size);

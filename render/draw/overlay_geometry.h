@@ -1,7 +1,8 @@
 // The overlays a user can ask for on top of the bodies (INTERFACE.md, render.overlays and
 // --overlay): `contacts` (each impulse of the frame: a dot at the contact point and a stroke
 // along the impulse's direction; collisions and resting contacts in two colours) and `velocity`
-// (an arrow from each moving body's centre of mass along its velocity). `rugosity` colours the
+// (an arrow from each moving body's centre of mass along its velocity). Strokes show the impulse
+// on a moving body: on A, or on B when A is fixed. `rugosity` colours the
 // outlines themselves and is drawn by the renderer. Geometry is made on the CPU each frame, in
 // normalised device coordinates, as quads whose vertices know their pixel offsets, so one
 // shader anti-aliases lines and discs alike.
