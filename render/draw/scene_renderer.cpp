@@ -340,7 +340,33 @@ void SceneRenderer::upload_transforms(const FrameSnapshot& frame) {
                     g.transforms.data());
 }
 
+bool SceneRenderer::same_picture(const FrameSnapshot& frame) const {
+  if (!last_drawn_ || last_drawn_->bodies.size() != frame.bodies.size()) return false;
+  if (settings_.overlays.contacts && (!frame.events.empty() || !last_drawn_->events.empty())) {
+    return false;
+  }
+  for (std::size_t i = 0; i < frame.bodies.size(); ++i) {
+    const BodyPose& a = frame.bodies[i];
+    const BodyPose& b = last_drawn_->bodies[i];
+    if (a.placement.cos_angle() != b.placement.cos_angle() ||
+        a.placement.sin_angle() != b.placement.sin_angle() ||
+        a.placement.translation() != b.placement.translation()) {
+      return false;
+    }
+    if (settings_.overlays.velocity && (a.velocity != b.velocity || a.asleep != b.asleep)) {
+      return false;
+    }
+  }
+  return true;
+}
+
 void SceneRenderer::draw(const FrameSnapshot& frame) {
+  // A scene at rest (every body asleep or still) keeps its last picture: nothing is drawn.
+  if (same_picture(frame)) {
+    ++frames_reused_;
+    return;
+  }
+  last_drawn_ = frame;
   GpuState& g = *gpu_;
   const bool msaa = settings_.anti_aliasing == AntiAliasing::kMsaa;
   const float fringe = settings_.anti_aliasing == AntiAliasing::kShader ? 1.f : 0.f;

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -59,8 +60,12 @@ class SceneRenderer {
   SceneRenderer(const SceneRenderer&) = delete;
   SceneRenderer& operator=(const SceneRenderer&) = delete;
 
-  // Draws the frame into the context's framebuffer. Throws std::runtime_error on a GL error.
+  // Draws the frame into the context's framebuffer, unless it would give the picture already
+  // there (every placement, and what the overlays show, bit for bit the same): a scene at rest
+  // costs a read back per frame. Throws std::runtime_error on a GL error.
   void draw(const FrameSnapshot& frame);
+  // Frames draw() found unchanged and did not draw.
+  std::size_t frames_reused() const { return frames_reused_; }
   // Reads what draw() made, rows top first.
   void read(Image& image) const;
   Image render(const FrameSnapshot& frame) {
@@ -78,6 +83,7 @@ class SceneRenderer {
   void build_meshes();
   void create_targets();
   void upload_transforms(const FrameSnapshot& frame);
+  bool same_picture(const FrameSnapshot& frame) const;
 
   GlContext& context_;
   const GlApi& gl_;
@@ -86,6 +92,8 @@ class SceneRenderer {
   std::vector<DetailOutline> outlines_;
   std::vector<bool> fixed_;
   OverlayBuilder overlay_builder_;
+  std::optional<FrameSnapshot> last_drawn_;
+  std::size_t frames_reused_ = 0;
   std::unique_ptr<GpuState> gpu_;
 };
 

@@ -140,6 +140,25 @@ TEST(SceneRenderer, MovesBodiesByTheirPlacement) {
             render(GlBackend::kOsmesa, AntiAliasing::kShader).rgba);
 }
 
+// A scene at rest is not drawn again, and what is read back is still the right picture; any
+// change of placement draws.
+TEST(SceneRenderer, UnchangedFramesAreReusedNotRedrawn) {
+  std::unique_ptr<GlContext> context = GlContext::create(GlBackend::kOsmesa, kWidth, kHeight);
+  SceneRenderer renderer(*context, known_bodies(0.01), settings(AntiAliasing::kShader));
+  const Image first = renderer.render(known_frame());
+  FrameSnapshot same = known_frame();
+  same.frame = 7;
+  same.time = 0.25;
+  EXPECT_EQ(renderer.render(same).rgba, first.rgba);
+  EXPECT_EQ(renderer.frames_reused(), 1u);
+  FrameSnapshot moved = known_frame();
+  moved.bodies[2].placement = Transform2(1e-9, Vec2(0.0, 0.2));  // the smallest turn counts
+  renderer.draw(moved);
+  EXPECT_EQ(renderer.frames_reused(), 1u);
+  EXPECT_EQ(renderer.render(known_frame()).rgba, first.rgba);
+  EXPECT_EQ(renderer.frames_reused(), 1u);
+}
+
 TEST(SceneRenderer, RejectsASnapshotOfAnotherScene) {
   std::unique_ptr<GlContext> context = GlContext::create(GlBackend::kOsmesa, kWidth, kHeight);
   SceneRenderer renderer(*context, known_bodies(0.0), settings(AntiAliasing::kShader));
