@@ -246,7 +246,7 @@ void register_all() {
                                    [png](benchmark::State& s) { ffmpeg_encode(s, png); })
           ->Arg(height)
           ->Iterations(1)
-          ->Repetitions(3)
+          ->Repetitions(5)
           ->UseRealTime()
           ->UseRealTime()
           ->Unit(benchmark::kMillisecond);
@@ -254,7 +254,7 @@ void register_all() {
                                    [png](benchmark::State& s) { rugosim_render(s, png); })
           ->Arg(height)
           ->Iterations(1)
-          ->Repetitions(3)
+          ->Repetitions(5)
           ->UseRealTime()
           ->UseRealTime()
           ->Unit(benchmark::kMillisecond);

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -131,9 +132,9 @@ std::pair<int, int> frame_size(const std::string& text, const Scene& scene, Outp
 // The renderer of the render thread: its own GL context and scene renderer.
 class ContextRenderer final : public FrameRenderer {
  public:
-  ContextRenderer(GlBackend backend, std::vector<BodyLook> looks, const RenderSettings& settings)
-      : context_(GlContext::create(backend, settings.camera.width_px, settings.camera.height_px)),
-        renderer_(*context_, std::move(looks), settings) {}
+  ContextRenderer(std::unique_ptr<GlContext> context, std::vector<BodyLook> looks,
+                  const RenderSettings& settings)
+      : context_(std::move(context)), renderer_(*context_, std::move(looks), settings) {}
   void render(const FrameSnapshot& frame, Image& image) override {
     renderer_.draw(frame);
     renderer_.read(image);
@@ -217,26 +218,64 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
   return plan;
 }
 
-// Simulates up to each frame of `frames` in turn and hands out its snapshot (with the events
-// since the previous frame drawn).
-class Simulation {
+// The snapshots of the clip, made on the simulation thread. With an explicit camera each frame
+// is simulated when asked for. With "auto" the whole clip is simulated at the first call (the
+// snapshots are small), the camera that frames every body over all of it is published to the
+// render thread, and the stored snapshots are handed out.
+class ClipSource {
  public:
-  Simulation(World& world, double fps, std::vector<std::size_t> frames)
-      : world_(world), fps_(fps), frames_(std::move(frames)) {}
+  ClipSource(World& world, const Plan& plan, std::optional<Camera> camera)
+      : world_(world), plan_(plan), automatic_(!camera) {
+    if (camera) camera_.set_value(camera);
+  }
+
   std::optional<FrameSnapshot> next() {
-    if (next_ >= frames_.size()) return std::nullopt;
-    const std::size_t frame = frames_[next_++];
-    if (frame > 0) world_.advance_to(static_cast<double>(frame) / fps_);
+    if (!automatic_) return simulate_next();
+    if (!simulated_) simulate_clip();
+    if (handed_ >= clip_.size()) return std::nullopt;
+    return std::move(clip_[handed_++]);
+  }
+
+  // Blocks until the camera is known; nullopt when the simulation was interrupted first.
+  std::optional<Camera> camera() { return camera_future_.get(); }
+
+ private:
+  std::optional<FrameSnapshot> simulate_next() {
+    if (next_ >= plan_.frames.size()) return std::nullopt;
+    const std::size_t frame = plan_.frames[next_++];
+    if (frame > 0) world_.advance_to(static_cast<double>(frame) / plan_.fps);
     FrameSnapshot snapshot = take_snapshot(world_, frame);
     world_.clear_events();
     return snapshot;
   }
 
- private:
+  void simulate_clip() {
+    simulated_ = true;
+    try {
+      while (std::optional<FrameSnapshot> snapshot = simulate_next()) {
+        if (SigintGuard::interrupted()) {
+          clip_.clear();
+          camera_.set_value(std::nullopt);
+          return;
+        }
+        clip_.push_back(std::move(*snapshot));
+      }
+      camera_.set_value(fit_clip_camera(world_, clip_, plan_.width, plan_.height));
+    } catch (...) {
+      camera_.set_exception(std::current_exception());
+      throw;
+    }
+  }
+
   World& world_;
-  double fps_;
-  std::vector<std::size_t> frames_;
+  const Plan& plan_;
+  bool automatic_;
+  std::promise<std::optional<Camera>> camera_;
+  std::future<std::optional<Camera>> camera_future_ = camera_.get_future();
   std::size_t next_ = 0;
+  bool simulated_ = false;
+  std::vector<FrameSnapshot> clip_;
+  std::size_t handed_ = 0;
 };
 
 // llvmpipe's rasteriser threads, read by Mesa when the first context starts. By default none:
@@ -268,30 +307,11 @@ int run_render(const RenderOptions& o) {
   choose_rasteriser_threads(o.gl_threads);
   const SigintGuard sigint;
   try {
-    Simulation simulation(world, plan.fps, plan.frames);
     RenderSettings settings;
     settings.background = *parse_hex_color(loaded->scene.render.background);
     settings.anti_aliasing = plan.anti_aliasing;
     settings.overlays = plan.overlays;
-    // An automatic camera frames every body over the whole clip, so the clip is simulated
-    // first (snapshots are small); an explicit one lets rendering start at the first frame.
-    std::vector<FrameSnapshot> simulated;
-    std::optional<Camera> camera = scene_camera(loaded->scene, plan.width, plan.height);
-    if (!camera) {
-      Progress progress(static_cast<double>(plan.frames.size()), stderr, Progress::Unit::kFrames);
-      while (std::optional<FrameSnapshot> s = simulation.next()) {
-        if (sigint.interrupted()) break;
-        simulated.push_back(std::move(*s));
-        progress.update(static_cast<double>(simulated.size()));
-      }
-      progress.finish();
-      if (sigint.interrupted()) {
-        fmt::print(stderr, "interrupted while simulating: nothing rendered\n");
-        return kExitInterrupted;
-      }
-      camera = fit_clip_camera(world, simulated, plan.width, plan.height);
-    }
-    settings.camera = *camera;
+    ClipSource source(world, plan, scene_camera(loaded->scene, plan.width, plan.height));
 
     std::unique_ptr<FrameSink> sink;
     std::vector<Image> strip;
@@ -302,16 +322,18 @@ int run_render(const RenderOptions& o) {
       sink = std::make_unique<PngSequenceSink>(o.output, plan.png);
     }
 
-    std::size_t next_simulated = 0;
     PipelineStages stages;
-    stages.next_snapshot = [&]() -> std::optional<FrameSnapshot> {
-      if (simulated.empty()) return simulation.next();
-      if (next_simulated >= simulated.size()) return std::nullopt;
-      return std::move(simulated[next_simulated++]);
-    };
+    stages.next_snapshot = [&] { return source.next(); };
     const std::vector<BodyLook> looks = body_looks(loaded->scene, world);
-    stages.make_renderer = [&] {
-      return std::make_unique<ContextRenderer>(plan.backend, looks, settings);
+    stages.make_renderer = [&]() -> std::unique_ptr<FrameRenderer> {
+      // The context starts (Mesa, shaders) while the simulation runs; the meshes wait for the
+      // camera, whose pixel size sets their detail.
+      std::unique_ptr<GlContext> context = GlContext::create(plan.backend, plan.width, plan.height);
+      const std::optional<Camera> camera = source.camera();
+      if (!camera) return nullptr;  // interrupted before the clip was simulated
+      RenderSettings with_camera = settings;
+      with_camera.camera = *camera;
+      return std::make_unique<ContextRenderer>(std::move(context), looks, with_camera);
     };
     Progress progress(static_cast<double>(plan.frames.size()), stderr, Progress::Unit::kFrames);
     std::size_t done = 0;

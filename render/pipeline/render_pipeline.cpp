@@ -72,7 +72,7 @@ PipelineResult run_pipeline(const PipelineStages& stages) {
     try {
       std::unique_ptr<FrameRenderer> renderer = stages.make_renderer();
       // After an interruption the frame in hand is finished and passed on; queued ones are not.
-      while (!stop && !interrupted()) {
+      while (renderer && !stop && !interrupted()) {
         std::optional<FrameSnapshot> snapshot = snapshots.pop();
         if (!snapshot) break;
         std::optional<Image> image = spare.pop();

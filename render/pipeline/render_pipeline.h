@@ -30,7 +30,8 @@ class FrameRenderer {
 struct PipelineStages {
   // The next snapshot to draw, or nullopt when the clip is done (simulation thread).
   std::function<std::optional<FrameSnapshot>()> next_snapshot;
-  // Makes the renderer (render thread, once).
+  // Makes the renderer (render thread, once); null ends the run early without an error (the
+  // caller was interrupted before it could say how to draw).
   std::function<std::unique_ptr<FrameRenderer>()> make_renderer;
   // Takes every image in order (sink thread: the caller's). It may keep nothing: the image is
   // reused for a later frame once this returns.
