@@ -74,8 +74,8 @@ OutputKind output_kind(const RenderOptions& o) {
       o.output));
 }
 
-// Regular files are not overwritten without -y; devices and pipes (/dev/null, /dev/full, a
-// FIFO) are written to as they are.
+// Regular files are not overwritten without -y (for a sequence: none of its frames' files);
+// devices and pipes (/dev/null, /dev/full, a FIFO) are written to as they are.
 void refuse_to_overwrite(const std::string& path, bool overwrite) {
   struct stat info {};
   if (!overwrite && ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode)) {
@@ -211,10 +211,13 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
   plan.mp4.fps = plan.fps;
   plan.mp4.crf = o.crf;
   plan.mp4.preset = o.preset;
-  const std::string first_file = plan.kind == OutputKind::kPngSequence
-                                     ? format_frame_path(o.output, plan.frames.front())
-                                     : o.output;
-  refuse_to_overwrite(first_file, o.overwrite);
+  if (plan.kind == OutputKind::kPngSequence) {
+    for (const std::size_t frame : plan.frames) {
+      refuse_to_overwrite(format_frame_path(o.output, frame), o.overwrite);
+    }
+  } else {
+    refuse_to_overwrite(o.output, o.overwrite);
+  }
   return plan;
 }
 
@@ -240,10 +243,17 @@ class ClipSource {
   std::optional<Camera> camera() { return camera_future_.get(); }
 
  private:
+  // The World passes through every frame time of the clip, drawn or not: a step ends at each
+  // time it is asked for, so stopping only at the drawn frames would give another trajectory
+  // (a strip's frames or a --frames range must look exactly as in the whole clip, and as in
+  // `simulate` at the same fps). The events kept are those since the previous frame time.
   std::optional<FrameSnapshot> simulate_next() {
     if (next_ >= plan_.frames.size()) return std::nullopt;
     const std::size_t frame = plan_.frames[next_++];
-    if (frame > 0) world_.advance_to(static_cast<double>(frame) / plan_.fps);
+    for (; reached_ < frame; ++reached_) {
+      world_.clear_events();
+      world_.advance_to(static_cast<double>(reached_ + 1) / plan_.fps);
+    }
     FrameSnapshot snapshot = take_snapshot(world_, frame);
     world_.clear_events();
     return snapshot;
@@ -273,6 +283,7 @@ class ClipSource {
   std::promise<std::optional<Camera>> camera_;
   std::future<std::optional<Camera>> camera_future_ = camera_.get_future();
   std::size_t next_ = 0;
+  std::size_t reached_ = 0;  // the frame whose time the World is at
   bool simulated_ = false;
   std::vector<FrameSnapshot> clip_;
   std::size_t handed_ = 0;
@@ -320,6 +331,14 @@ int run_render(const RenderOptions& o) {
       sink = std::make_unique<Mp4Sink>(o.output, plan.width, plan.height, plan.mp4);
     } else if (plan.kind == OutputKind::kPngSequence) {
       sink = std::make_unique<PngSequenceSink>(o.output, plan.png);
+    } else {
+      // The strip is written at the end: a folder that is not there fails now, not after
+      // rendering.
+      const std::filesystem::path folder = std::filesystem::path(o.output).parent_path();
+      if (!folder.empty() && !std::filesystem::is_directory(folder)) {
+        throw SinkError(fmt::format("{}: No such file or directory (the folder of the strip)",
+                                    folder.string()));
+      }
     }
 
     PipelineStages stages;

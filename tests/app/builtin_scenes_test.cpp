@@ -13,19 +13,14 @@
 
 #include <gtest/gtest.h>
 
+#include "support/program_under_test.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path source_dir() {
-  const char* dir = std::getenv("RUGOSIM_SOURCE_DIR");
-  return dir != nullptr ? fs::path(dir) : fs::path(".");
-}
-
-std::string program() {
-  const char* p = std::getenv("RUGOSIM_PROGRAM");
-  return p != nullptr ? p : "rugosim";
-}
+using rugosim::testing::program;
+using rugosim::testing::source_dir;
 
 fs::path scratch() {
   const fs::path dir =
