@@ -113,7 +113,7 @@ void choose_rasteriser_threads(const std::optional<int>& threads) {
 
 PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
                            const std::function<void(const Image&, std::size_t)>& consume,
-                           const std::atomic<bool>* interrupted) {
+                           const std::atomic<bool>* interrupted, std::string* renderer) {
   World& world = *loaded.world;
   RenderSettings settings;
   settings.background = *parse_hex_color(loaded.scene.render.background);
@@ -129,6 +129,7 @@ PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
     // The context starts (Mesa, shaders) while the simulation runs; the meshes wait for the
     // camera, whose pixel size sets their detail.
     std::unique_ptr<GlContext> context = GlContext::create(plan.backend, plan.width, plan.height);
+    if (renderer != nullptr) *renderer = context->renderer();  // read after the threads join
     const std::optional<Camera> camera = source.camera();
     if (!camera) return nullptr;  // interrupted before the clip was simulated
     RenderSettings with_camera = settings;

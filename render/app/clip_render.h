@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "render/app/scene_input.h"
@@ -36,8 +37,9 @@ void choose_rasteriser_threads(const std::optional<int>& threads);
 // with each image (on the calling thread, in order). The camera is the scene's, or with "auto"
 // the one that frames every body over the frames drawn. Stops early when `interrupted` is set.
 // Throws what a stage throws (GlUnavailable, std::runtime_error from the consumer...).
+// `renderer`, when given, receives GlContext::renderer() (Mesa version, backend).
 PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
                            const std::function<void(const Image&, std::size_t)>& consume,
-                           const std::atomic<bool>* interrupted);
+                           const std::atomic<bool>* interrupted, std::string* renderer = nullptr);
 
 }  // namespace rugosim::app

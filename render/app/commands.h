@@ -55,6 +55,27 @@ struct RenderOptions {
 // the output so that it holds every frame rendered.
 int run_render(const RenderOptions& options);
 
+struct SnapshotOptions {
+  std::string scene_path;
+  std::string golden_dir;  // DIR: <stem>_<frame>.png goldens and <stem>.json beside them
+  std::string frames;      // "0,30,60" or ranges "0:90:30"; empty: the goldens' frames, or 4
+                           // spread over the clip
+  bool update = false;     // write the goldens instead of comparing
+  bool exact = false;
+  int threshold = 16;        // per-channel difference a pixel may have (0..255)
+  double max_share = 0.001;  // share of pixels allowed past the threshold
+  bool json = false;         // the comparison as JSON on stdout
+  std::string size;          // "WxH"; empty: the goldens' size, or render.size
+  std::string backend = "osmesa";
+  std::string anti_aliasing = "shader";
+};
+
+// Renders frames of a scene and compares them with golden PNGs (INTERFACE.md, `snapshot`), or
+// writes the goldens with --update. Exit 0 when every frame passes (or was written), 1 when one
+// fails or is missing (an `actual` and a `diff` image and a summary are written next to the
+// goldens), 2 for bad usage, a bad scene or an unreadable golden.
+int run_snapshot(const SnapshotOptions& options);
+
 struct PlotOptions {
   std::string events_path;      // empty: no friction plot
   std::string trajectory_path;  // empty: no velocity plot

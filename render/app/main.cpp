@@ -1,5 +1,5 @@
-// The rugosim command line (INTERFACE.md, "Command line"): validate, info, simulate, render and
-// plot; snapshot arrives with its layer.
+// The rugosim command line (INTERFACE.md, "Command line"): validate, info, simulate, render,
+// snapshot and plot.
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
@@ -119,6 +119,45 @@ int main(int argc, char** argv) {
       "An existing OUT is kept unless -y is given. On Ctrl-C the frame in hand is finished, the "
       "output is closed (a playable MP4) and the exit code is 130.");
 
+  SnapshotOptions snap;
+  CLI::App* snapshot = app.add_subcommand(
+      "snapshot", "visual regression: render frames and compare them with golden PNGs");
+  snapshot->add_option("SCENE", snap.scene_path, "scene file (JSON)")->required();
+  snapshot
+      ->add_option("--golden", snap.golden_dir,
+                   "folder of the goldens: SCENE-STEM_FRAME.png and SCENE-STEM.json")
+      ->required()
+      ->type_name("DIR");
+  snapshot
+      ->add_option("--frames", snap.frames,
+                   "frames to check: 0,30,60 or ranges A:B, A:B:STEP (default: the goldens' "
+                   "frames, or 4 spread over the clip)")
+      ->type_name("LIST");
+  snapshot->add_flag("--update", snap.update, "write the goldens (and their .json) instead");
+  snapshot->add_flag("--exact", snap.exact, "fail on any difference");
+  snapshot
+      ->add_option("--threshold", snap.threshold,
+                   "a pixel differs when a channel differs by more than this (0..255)")
+      ->capture_default_str();
+  snapshot
+      ->add_option("--max-share", snap.max_share,
+                   "fail when more than this share of pixels differ (0..1)")
+      ->capture_default_str();
+  snapshot->add_flag("--json", snap.json, "print the comparison as JSON on stdout");
+  snapshot->add_option("--size", snap.size, "frame size (default: the goldens', or render.size)")
+      ->type_name("WxH");
+  snapshot->add_option("--backend", snap.backend, "OpenGL backend: osmesa or egl")
+      ->capture_default_str();
+  snapshot->add_option("--aa", snap.anti_aliasing, "anti-aliasing: shader, msaa or none")
+      ->capture_default_str();
+  snapshot->footer(
+      "Examples:\n"
+      "  rugosim snapshot scenes/figure12a.json --golden tests/goldens --size 320x180 --update\n"
+      "  rugosim snapshot scenes/figure12a.json --golden tests/goldens --json\n"
+      "Exit 0 when every frame matches, 1 when one differs or is missing (NAME_FRAME.actual.png, "
+      "NAME_FRAME.diff.png and NAME.summary.txt are written beside the goldens), 2 for bad "
+      "usage, a bad scene or an unreadable golden.");
+
   PlotOptions plot_options;
   bool no_contacts = false;
   CLI::App* plot = app.add_subcommand(
@@ -170,6 +209,7 @@ int main(int argc, char** argv) {
     }
     return run_render(render_options);
   }
+  if (snapshot->parsed()) return run_snapshot(snap);
   if (plot->parsed()) {
     plot_options.contacts = !no_contacts;
     return run_plot(plot_options);
