@@ -60,6 +60,7 @@ struct SnapshotOptions {
   std::string golden_dir;  // DIR: <stem>_<frame>.png goldens and <stem>.json beside them
   std::string frames;      // "0,30,60" or ranges "0:90:30"; empty: the goldens' frames, or 4
                            // spread over the clip
+  std::string output_dir;  // where a failure's actual, diff and summary go; empty: golden_dir
   bool update = false;     // write the goldens instead of comparing
   bool exact = false;
   int threshold = 16;        // per-channel difference a pixel may have (0..255)

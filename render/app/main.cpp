@@ -133,6 +133,11 @@ int main(int argc, char** argv) {
                    "frames to check: 0,30,60 or ranges A:B, A:B:STEP (default: the goldens' "
                    "frames, or 4 spread over the clip)")
       ->type_name("LIST");
+  snapshot
+      ->add_option("--output", snap.output_dir,
+                   "folder for a failure's actual and diff images and summary (default: "
+                   "the golden folder), e.g. to upload as CI artifacts")
+      ->type_name("DIR");
   snapshot->add_flag("--update", snap.update, "write the goldens (and their .json) instead");
   snapshot->add_flag("--exact", snap.exact, "fail on any difference");
   snapshot

@@ -84,17 +84,18 @@ std::vector<std::size_t> parse_frame_list(const std::string& text, std::size_t l
 }
 
 struct Suite {
-  fs::path dir;
+  fs::path dir;      // the goldens
+  fs::path output;   // what a failure leaves (the goldens' folder unless --output)
   std::string stem;  // the scene file's name without .json
   fs::path golden(std::size_t frame) const { return dir / fmt::format("{}_{}.png", stem, frame); }
   fs::path actual(std::size_t frame) const {
-    return dir / fmt::format("{}_{}.actual.png", stem, frame);
+    return output / fmt::format("{}_{}.actual.png", stem, frame);
   }
   fs::path diff(std::size_t frame) const {
-    return dir / fmt::format("{}_{}.diff.png", stem, frame);
+    return output / fmt::format("{}_{}.diff.png", stem, frame);
   }
   fs::path metadata() const { return dir / (stem + ".json"); }
-  fs::path summary() const { return dir / (stem + ".summary.txt"); }
+  fs::path summary() const { return output / (stem + ".summary.txt"); }
 };
 
 // What the goldens were made with, if they say.
@@ -133,7 +134,9 @@ struct Setup {
 
 Setup make_setup(const SnapshotOptions& o, const LoadedScene& loaded) {
   Setup s;
-  s.suite = Suite{fs::path(o.golden_dir), fs::path(o.scene_path).stem().string()};
+  s.suite =
+      Suite{fs::path(o.golden_dir), fs::path(o.output_dir.empty() ? o.golden_dir : o.output_dir),
+            fs::path(o.scene_path).stem().string()};
   if (!o.update && !fs::is_directory(s.suite.dir)) {
     throw UsageError(fmt::format(
         "--golden {}: no such folder; create the goldens with: rugosim snapshot {} --golden {} "
@@ -211,6 +214,7 @@ int run_snapshot(const SnapshotOptions& o) {
   try {
     s = make_setup(o, *loaded);
     if (o.update) fs::create_directories(s.suite.dir);
+    fs::create_directories(s.suite.output);
   } catch (const UsageError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kExitUsage;
