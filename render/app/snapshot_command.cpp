@@ -185,7 +185,7 @@ Setup make_setup(const SnapshotOptions& o, const LoadedScene& loaded) {
 
 json outcome_json(const Suite& suite, const FrameOutcome& f) {
   json j{{"frame", f.frame}, {"status", f.status}, {"golden", suite.golden(f.frame).string()}};
-  if (f.status == "passed" || f.status == "failed") {
+  if (f.status != "missing") {
     const CompareResult& r = f.result;
     j["differing_pixels"] = r.differing_pixels;
     j["failing_pixels"] = r.failing_pixels;
@@ -205,6 +205,122 @@ json outcome_json(const Suite& suite, const FrameOutcome& f) {
   return j;
 }
 
+// --update: the frames become the goldens, with what made them.
+void write_goldens(const Setup& s, const std::vector<Image>& frames, const std::string& renderer) {
+  const Suite& suite = s.suite;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    write_png_file(suite.golden(s.plan.frames[i]).string(), frames[i], kGoldenPng);
+    fs::remove(suite.actual(s.plan.frames[i]));
+    fs::remove(suite.diff(s.plan.frames[i]));
+  }
+  fs::remove(suite.summary());
+  const json metadata{{"scene", suite.stem},
+                      {"frames", s.plan.frames},
+                      {"size", {s.plan.width, s.plan.height}},
+                      {"anti_aliasing", std::string(anti_aliasing_name(s.plan.anti_aliasing))},
+                      {"renderer", renderer},
+                      {"rugosim", kVersion}};
+  write_text(suite.metadata(), metadata.dump(2) + "\n");
+  fmt::print(stderr, "wrote {} golden frame{} of {} into {} ({})\n", frames.size(),
+             frames.size() == 1 ? "" : "s", suite.stem, suite.dir.string(), renderer);
+}
+
+// An unreadable golden: exit 2, after saying how to recreate it.
+class BadGolden : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// One frame against its golden; a failure writes the actual and diff images. Appends the
+// frame's line to `report`.
+FrameOutcome compare_frame(const SnapshotOptions& o, const Setup& s, std::size_t frame,
+                           const Image& image, std::string& report) {
+  const Suite& suite = s.suite;
+  FrameOutcome f;
+  f.frame = frame;
+  const fs::path golden = suite.golden(frame);
+  if (!fs::exists(golden)) {
+    f.status = "missing";
+    write_png_file(suite.actual(frame).string(), image, kGoldenPng);
+    report += fmt::format(
+        "frame {}: no golden {}; create it with: rugosim snapshot {} --golden {} --update\n", frame,
+        golden.string(), o.scene_path, o.golden_dir);
+    return f;
+  }
+  Image expected;
+  try {
+    expected = read_png_file(golden.string());
+  } catch (const PngReadError& e) {
+    throw BadGolden(fmt::format(
+        "golden {} cannot be read: {}\n(recreate it with: rugosim snapshot {} --golden {} "
+        "--update)",
+        golden.string(), e.what(), o.scene_path, o.golden_dir));
+  }
+  f.result = compare_images(expected, image, s.rule);
+  f.status = f.result.identical ? "identical" : f.result.passed ? "passed" : "failed";
+  if (!f.result.passed) {
+    write_png_file(suite.actual(frame).string(), image, kGoldenPng);
+    write_png_file(suite.diff(frame).string(), difference_image(expected, image, s.rule),
+                   kGoldenPng);
+  }
+  report += fmt::format("frame {}: {}: {}\n", frame, f.status, describe(f.result, s.rule));
+  return f;
+}
+
+void print_json(const Setup& s, bool passed, const std::string& golden_renderer,
+                const std::string& renderer, const std::vector<FrameOutcome>& outcomes) {
+  json out{
+      {"scene", s.suite.stem},
+      {"passed", passed},
+      {"rule",
+       {{"exact", s.rule.exact}, {"threshold", s.rule.threshold}, {"max_share", s.rule.max_share}}},
+      {"renderer", {{"golden", golden_renderer}, {"current", renderer}}},
+      {"frames", json::array()}};
+  for (const FrameOutcome& f : outcomes)
+    out["frames"].push_back(outcome_json(s.suite, f));
+  fmt::print("{}\n", out.dump(2));
+}
+
+// Every frame against its golden: the report on stderr (and in the summary file on failure),
+// JSON on stdout when asked. True when all pass.
+bool compare_all(const SnapshotOptions& o, const Setup& s, const std::vector<Image>& frames,
+                 const std::string& renderer) {
+  const Suite& suite = s.suite;
+  std::vector<FrameOutcome> outcomes;
+  std::string report;
+  bool passed = true;
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    outcomes.push_back(compare_frame(o, s, s.plan.frames[i], frames[i], report));
+    const std::string& status = outcomes.back().status;
+    passed = passed && (status == "identical" || status == "passed");
+  }
+  const std::string golden_renderer = s.metadata && s.metadata->contains("renderer")
+                                          ? s.metadata->at("renderer").get<std::string>()
+                                          : std::string();
+  if (!golden_renderer.empty() && golden_renderer != renderer) {
+    report += fmt::format("note: the goldens were made with \"{}\"; this renderer is \"{}\"{}\n",
+                          golden_renderer, renderer,
+                          passed ? "" : ": differences may come from the renderer, not the scene");
+  }
+  if (passed) {
+    for (const FrameOutcome& f : outcomes) {
+      fs::remove(suite.actual(f.frame));
+      fs::remove(suite.diff(f.frame));
+    }
+    fs::remove(suite.summary());
+  } else {
+    write_text(suite.summary(), report);
+  }
+  fmt::print(stderr, "{}{}: {} ({} frame{})\n", report, suite.stem, passed ? "passed" : "FAILED",
+             outcomes.size(), outcomes.size() == 1 ? "" : "s");
+  if (!passed) {
+    fmt::print(stderr, "actual and diff images and {} are in {}\n",
+               suite.summary().filename().string(), suite.output.string());
+  }
+  if (o.json) print_json(s, passed, golden_renderer, renderer, outcomes);
+  return passed;
+}
+
 }  // namespace
 
 int run_snapshot(const SnapshotOptions& o) {
@@ -218,7 +334,7 @@ int run_snapshot(const SnapshotOptions& o) {
   } catch (const UsageError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kExitUsage;
-  } catch (const std::exception& e) {  // e.g. a golden folder that cannot be created
+  } catch (const std::exception& e) {  // e.g. a folder that cannot be created
     fmt::print(stderr, "error: {}\n", e.what());
     return kExitFailure;
   }
@@ -234,103 +350,14 @@ int run_snapshot(const SnapshotOptions& o) {
       fmt::print(stderr, "interrupted: nothing compared or written\n");
       return kExitInterrupted;
     }
-    const Suite& suite = s.suite;
     if (o.update) {
-      for (std::size_t i = 0; i < frames.size(); ++i) {
-        write_png_file(suite.golden(s.plan.frames[i]).string(), frames[i], kGoldenPng);
-        fs::remove(suite.actual(s.plan.frames[i]));
-        fs::remove(suite.diff(s.plan.frames[i]));
-      }
-      fs::remove(suite.summary());
-      const json metadata{{"scene", suite.stem},
-                          {"frames", s.plan.frames},
-                          {"size", {s.plan.width, s.plan.height}},
-                          {"anti_aliasing", std::string(anti_aliasing_name(s.plan.anti_aliasing))},
-                          {"renderer", renderer},
-                          {"rugosim", kVersion}};
-      write_text(suite.metadata(), metadata.dump(2) + "\n");
-      fmt::print(stderr, "wrote {} golden frame{} of {} into {} ({})\n", frames.size(),
-                 frames.size() == 1 ? "" : "s", suite.stem, suite.dir.string(), renderer);
+      write_goldens(s, frames, renderer);
       return kExitOk;
     }
-
-    // Compare, frame by frame.
-    std::vector<FrameOutcome> outcomes;
-    std::string report;
-    const std::string golden_renderer = s.metadata && s.metadata->contains("renderer")
-                                            ? s.metadata->at("renderer").get<std::string>()
-                                            : std::string();
-    const bool renderer_differs = !golden_renderer.empty() && golden_renderer != renderer;
-    bool passed = true;
-    for (std::size_t i = 0; i < frames.size(); ++i) {
-      FrameOutcome f;
-      f.frame = s.plan.frames[i];
-      const fs::path golden = suite.golden(f.frame);
-      if (!fs::exists(golden)) {
-        f.status = "missing";
-        passed = false;
-        write_png_file(suite.actual(f.frame).string(), frames[i], kGoldenPng);
-        report += fmt::format(
-            "frame {}: no golden {}; create it with: rugosim snapshot {} "
-            "--golden {} --update\n",
-            f.frame, golden.string(), o.scene_path, o.golden_dir);
-      } else {
-        Image expected;
-        try {
-          expected = read_png_file(golden.string());
-        } catch (const PngReadError& e) {
-          fmt::print(stderr,
-                     "error: golden {} cannot be read: {}\n(recreate it with: rugosim snapshot "
-                     "{} --golden {} --update)\n",
-                     golden.string(), e.what(), o.scene_path, o.golden_dir);
-          return kExitUsage;
-        }
-        f.result = compare_images(expected, frames[i], s.rule);
-        f.status = f.result.identical ? "identical" : f.result.passed ? "passed" : "failed";
-        if (!f.result.passed) {
-          passed = false;
-          write_png_file(suite.actual(f.frame).string(), frames[i], kGoldenPng);
-          write_png_file(suite.diff(f.frame).string(),
-                         difference_image(expected, frames[i], s.rule), kGoldenPng);
-        }
-        report += fmt::format("frame {}: {}: {}\n", f.frame, f.status, describe(f.result, s.rule));
-      }
-      outcomes.push_back(f);
-    }
-    if (renderer_differs) {
-      report += fmt::format(
-          "note: the goldens were made with \"{}\"; this renderer is \"{}\"{}\n", golden_renderer,
-          renderer, passed ? "" : ": differences may come from the renderer, not the scene");
-    }
-    if (passed) {
-      for (const FrameOutcome& f : outcomes) {
-        fs::remove(suite.actual(f.frame));
-        fs::remove(suite.diff(f.frame));
-      }
-      fs::remove(suite.summary());
-    } else {
-      write_text(suite.summary(), report);
-    }
-    fmt::print(stderr, "{}{}: {} ({} frame{})\n", report, suite.stem, passed ? "passed" : "FAILED",
-               outcomes.size(), outcomes.size() == 1 ? "" : "s");
-    if (!passed) {
-      fmt::print(stderr, "actual and diff images and {} are in {}\n",
-                 suite.summary().filename().string(), suite.dir.string());
-    }
-    if (o.json) {
-      json out{{"scene", suite.stem},
-               {"passed", passed},
-               {"rule",
-                {{"exact", s.rule.exact},
-                 {"threshold", s.rule.threshold},
-                 {"max_share", s.rule.max_share}}},
-               {"renderer", {{"golden", golden_renderer}, {"current", renderer}}},
-               {"frames", json::array()}};
-      for (const FrameOutcome& f : outcomes)
-        out["frames"].push_back(outcome_json(suite, f));
-      fmt::print("{}\n", out.dump(2));
-    }
-    return passed ? kExitOk : kExitFailure;
+    return compare_all(o, s, frames, renderer) ? kExitOk : kExitFailure;
+  } catch (const BadGolden& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitUsage;
   } catch (const std::exception& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kExitFailure;
