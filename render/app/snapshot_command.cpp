@@ -70,16 +70,17 @@ std::vector<std::size_t> parse_frame_list(const std::string& text, std::size_t l
     const std::size_t end = parts.size() > 1 ? parts[1] : first;
     const std::size_t step = parts.size() > 2 ? parts[2] : 1;
     if (step == 0 || end < first) throw UsageError("--frames: bad range \"" + item + "\"");
+    // Checked before expanding, so that a huge range costs nothing.
+    if (end > last) {
+      throw UsageError(
+          fmt::format("--frames: frame {} is past the clip's last frame, {}", end, last));
+    }
     for (std::size_t k = first; k <= end; k += step)
       frames.push_back(k);
   }
   std::sort(frames.begin(), frames.end());
   frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
   if (frames.empty()) throw UsageError("--frames: no frame given");
-  if (frames.back() > last) {
-    throw UsageError(
-        fmt::format("--frames: frame {} is past the clip's last frame, {}", frames.back(), last));
-  }
   return frames;
 }
 
@@ -98,15 +99,57 @@ struct Suite {
   fs::path summary() const { return output / (stem + ".summary.txt"); }
 };
 
-// What the goldens were made with, if they say.
-std::optional<json> read_metadata(const Suite& suite) {
+// What the goldens were made with, if they say: frames (within the clip, increasing), size
+// (1..16384 a side) and renderer, each optional and checked.
+struct Metadata {
+  std::optional<std::vector<std::size_t>> frames;
+  std::optional<std::pair<int, int>> size;
+  std::string renderer;
+};
+
+std::optional<Metadata> read_metadata(const Suite& suite, std::size_t last) {
   std::ifstream in(suite.metadata());
   if (!in) return std::nullopt;
+  const std::string file = suite.metadata().string();
+  json j;
   try {
-    return json::parse(in);
+    j = json::parse(in);
   } catch (const json::exception& e) {
-    throw UsageError(fmt::format("{}: not valid JSON ({})", suite.metadata().string(), e.what()));
+    throw UsageError(fmt::format("{}: not valid JSON ({})", file, e.what()));
   }
+  auto bad = [&](const std::string& key, const std::string& expected) {
+    return UsageError(fmt::format("{}: /{}: expected {}; recreate the goldens with --update", file,
+                                  key, expected));
+  };
+  if (!j.is_object()) throw bad("", "an object");
+  Metadata m;
+  if (j.contains("frames")) {
+    const json& frames = j["frames"];
+    if (!frames.is_array() || frames.empty()) throw bad("frames", "a list of frame numbers");
+    std::vector<std::size_t> list;
+    for (const json& f : frames) {
+      if (!f.is_number_unsigned() || f.get<std::size_t>() > last ||
+          (!list.empty() && f.get<std::size_t>() <= list.back())) {
+        throw bad("frames", fmt::format("increasing frame numbers of the clip (0 to {}), got {}",
+                                        last, frames.dump()));
+      }
+      list.push_back(f.get<std::size_t>());
+    }
+    m.frames = std::move(list);
+  }
+  if (j.contains("size")) {
+    const json& size = j["size"];
+    auto side = [](const json& v) { return v.is_number_unsigned() && v >= 1 && v <= 16384; };
+    if (!size.is_array() || size.size() != 2 || !side(size[0]) || !side(size[1])) {
+      throw bad("size", "[width, height] in pixels, got " + size.dump());
+    }
+    m.size = std::pair<int, int>(size[0].get<int>(), size[1].get<int>());
+  }
+  if (j.contains("renderer")) {
+    if (!j["renderer"].is_string()) throw bad("renderer", "a string");
+    m.renderer = j["renderer"].get<std::string>();
+  }
+  return m;
 }
 
 void write_text(const fs::path& path, const std::string& text) {
@@ -129,7 +172,7 @@ struct Setup {
   Suite suite;
   ClipPlan plan;
   CompareRule rule;
-  std::optional<json> metadata;
+  std::optional<Metadata> metadata;  // of the goldens there already (also when updating)
 };
 
 Setup make_setup(const SnapshotOptions& o, const LoadedScene& loaded) {
@@ -143,14 +186,15 @@ Setup make_setup(const SnapshotOptions& o, const LoadedScene& loaded) {
         "--update",
         o.golden_dir, o.scene_path, o.golden_dir));
   }
-  s.metadata = o.update ? std::nullopt : read_metadata(s.suite);
   const Scene& scene = loaded.scene;
   s.plan.fps = scene.render.fps;
   const auto last = static_cast<std::size_t>(std::floor(scene.duration * s.plan.fps + 1e-9));
+  // An update keeps the suite's frames and size unless told otherwise.
+  s.metadata = read_metadata(s.suite, last);
   if (!o.frames.empty()) {
     s.plan.frames = parse_frame_list(o.frames, last);
-  } else if (s.metadata && s.metadata->contains("frames")) {
-    s.plan.frames = s.metadata->at("frames").get<std::vector<std::size_t>>();
+  } else if (s.metadata && s.metadata->frames) {
+    s.plan.frames = *s.metadata->frames;
   } else {
     s.plan.frames = strip_frame_indices(0, last, kDefaultFrames);
   }
@@ -161,9 +205,8 @@ Setup make_setup(const SnapshotOptions& o, const LoadedScene& loaded) {
     if (x == std::string::npos) throw UsageError("--size: expected WxH, got \"" + o.size + "\"");
     s.plan.width = static_cast<int>(parse_number(o.size.substr(0, x), "--size W"));
     s.plan.height = static_cast<int>(parse_number(o.size.substr(x + 1), "--size H"));
-  } else if (s.metadata && s.metadata->contains("size")) {
-    s.plan.width = s.metadata->at("size").at(0).get<int>();
-    s.plan.height = s.metadata->at("size").at(1).get<int>();
+  } else if (s.metadata && s.metadata->size) {
+    std::tie(s.plan.width, s.plan.height) = *s.metadata->size;
   }
   if (s.plan.width < 1 || s.plan.height < 1 || s.plan.width > 16384 || s.plan.height > 16384) {
     throw UsageError(fmt::format("frame size {}x{}: expected 1..16384 pixels a side", s.plan.width,
@@ -231,36 +274,42 @@ class BadGolden : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// One frame against its golden; a failure writes the actual and diff images. Appends the
-// frame's line to `report`.
-FrameOutcome compare_frame(const SnapshotOptions& o, const Setup& s, std::size_t frame,
-                           const Image& image, std::string& report) {
-  const Suite& suite = s.suite;
-  FrameOutcome f;
-  f.frame = frame;
+// The golden of `frame`, or nullopt when there is none. An unreadable one is an error before
+// anything is written.
+std::optional<Image> read_golden(const SnapshotOptions& o, const Suite& suite, std::size_t frame) {
   const fs::path golden = suite.golden(frame);
-  if (!fs::exists(golden)) {
-    f.status = "missing";
-    write_png_file(suite.actual(frame).string(), image, kGoldenPng);
-    report += fmt::format(
-        "frame {}: no golden {}; create it with: rugosim snapshot {} --golden {} --update\n", frame,
-        golden.string(), o.scene_path, o.golden_dir);
-    return f;
-  }
-  Image expected;
+  if (!fs::exists(golden)) return std::nullopt;
   try {
-    expected = read_png_file(golden.string());
+    return read_png_file(golden.string());
   } catch (const PngReadError& e) {
     throw BadGolden(fmt::format(
         "golden {} cannot be read: {}\n(recreate it with: rugosim snapshot {} --golden {} "
         "--update)",
         golden.string(), e.what(), o.scene_path, o.golden_dir));
   }
-  f.result = compare_images(expected, image, s.rule);
+}
+
+// One frame against its golden; a failure writes the actual and diff images. Appends the
+// frame's line to `report`.
+FrameOutcome compare_frame(const SnapshotOptions& o, const Setup& s, std::size_t frame,
+                           const Image& image, const std::optional<Image>& expected,
+                           std::string& report) {
+  const Suite& suite = s.suite;
+  FrameOutcome f;
+  f.frame = frame;
+  if (!expected) {
+    f.status = "missing";
+    write_png_file(suite.actual(frame).string(), image, kGoldenPng);
+    report += fmt::format(
+        "frame {}: no golden {}; create it with: rugosim snapshot {} --golden {} --update\n", frame,
+        suite.golden(frame).string(), o.scene_path, o.golden_dir);
+    return f;
+  }
+  f.result = compare_images(*expected, image, s.rule);
   f.status = f.result.identical ? "identical" : f.result.passed ? "passed" : "failed";
   if (!f.result.passed) {
     write_png_file(suite.actual(frame).string(), image, kGoldenPng);
-    write_png_file(suite.diff(frame).string(), difference_image(expected, image, s.rule),
+    write_png_file(suite.diff(frame).string(), difference_image(*expected, image, s.rule),
                    kGoldenPng);
   }
   report += fmt::format("frame {}: {}: {}\n", frame, f.status, describe(f.result, s.rule));
@@ -289,14 +338,15 @@ bool compare_all(const SnapshotOptions& o, const Setup& s, const std::vector<Ima
   std::vector<FrameOutcome> outcomes;
   std::string report;
   bool passed = true;
+  std::vector<std::optional<Image>> goldens;
+  for (const std::size_t frame : s.plan.frames)
+    goldens.push_back(read_golden(o, suite, frame));
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    outcomes.push_back(compare_frame(o, s, s.plan.frames[i], frames[i], report));
+    outcomes.push_back(compare_frame(o, s, s.plan.frames[i], frames[i], goldens[i], report));
     const std::string& status = outcomes.back().status;
     passed = passed && (status == "identical" || status == "passed");
   }
-  const std::string golden_renderer = s.metadata && s.metadata->contains("renderer")
-                                          ? s.metadata->at("renderer").get<std::string>()
-                                          : std::string();
+  const std::string golden_renderer = s.metadata ? s.metadata->renderer : std::string();
   if (!golden_renderer.empty() && golden_renderer != renderer) {
     report += fmt::format("note: the goldens were made with \"{}\"; this renderer is \"{}\"{}\n",
                           golden_renderer, renderer,
