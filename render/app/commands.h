@@ -48,6 +48,7 @@ struct RenderOptions {
   int png_level = 1;
   std::string png_filter = "up";
   std::optional<int> gl_threads;  // llvmpipe rasteriser threads (LP_NUM_THREADS)
+  int png_workers = 2;            // threads compressing a PNG sequence
 };
 
 // Renders a scene to an MP4 clip, a PNG sequence or a film strip. Exit 2 for bad options or a

@@ -104,6 +104,11 @@ int main(int argc, char** argv) {
                    "llvmpipe rasteriser threads (LP_NUM_THREADS); default 0: the render thread "
                    "alone, leaving the cores to the encoder")
       ->check(CLI::Range(0, 64));
+  render
+      ->add_option("--png-workers", render_options.png_workers,
+                   "PNG sequence: threads compressing frames")
+      ->check(CLI::Range(1, 64))
+      ->capture_default_str();
   render->add_option("--png-level", render_options.png_level, "PNG: zlib level 0..9")
       ->capture_default_str();
   render

@@ -218,7 +218,7 @@ int run_render(const RenderOptions& o) {
       quiet_ffmpeg_logs();
       sink = std::make_unique<Mp4Sink>(o.output, plan.clip.width, plan.clip.height, plan.mp4);
     } else if (plan.kind == OutputKind::kPngSequence) {
-      sink = std::make_unique<PngSequenceSink>(o.output, plan.png);
+      sink = std::make_unique<PngSequenceSink>(o.output, plan.png, o.png_workers);
     } else {
       // The strip is written at the end: a folder that is not there fails now, not after
       // rendering.

@@ -1,7 +1,7 @@
 // Determinism through the program (issue 7): the same scene, seed and build give the same bytes
 // of telemetry and the same pixels whatever the thread counts: llvmpipe's rasteriser threads
-// (--gl-threads, LP_NUM_THREADS), the GL backend, and from one run to the next, so that goldens
-// can be compared exactly on one machine.
+// (--gl-threads, LP_NUM_THREADS), the PNG workers (--png-workers), the GL backend, and from one
+// run to the next, so that goldens can be compared exactly on one machine.
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -189,6 +189,11 @@ TEST_F(Determinism, RenderedFramesAreIdenticalAcrossRasteriserThreads) {
       {"egl, --gl-threads 0", {"--backend", "egl", "--gl-threads", "0"}, {}},
       {"egl, --gl-threads 4", {"--backend", "egl", "--gl-threads", "4"}, {}},
       {"egl, LP_NUM_THREADS=3", {"--backend", "egl"}, {{"LP_NUM_THREADS", "3"}}},
+      // The pipeline's own thread count: PNG compression workers.
+      {"--png-workers 1", {"--png-workers", "1"}, {{"LP_NUM_THREADS", std::nullopt}}},
+      {"--png-workers 4, --gl-threads 2",
+       {"--png-workers", "4", "--gl-threads", "2"},
+       {{"LP_NUM_THREADS", std::nullopt}}},
   };
   std::vector<std::vector<Image>> frames;
   for (std::size_t i = 0; i < settings.size(); ++i) {
