@@ -12,6 +12,11 @@ struct Image {
   int width = 0;                   // px
   int height = 0;                  // px
   std::vector<std::uint8_t> rgba;  // width × height × 4 bytes, row-major, top row first
+  // Which picture the pixels are, where their maker knows it: images with the same non-zero
+  // value have the same pixels (SceneRenderer numbers its pictures from a counter of the whole
+  // process), 0 means unknown. Whoever changes the pixels must set it to 0. It lets a renderer
+  // skip reading back, and a sink skip converting, a picture it already holds.
+  std::uint64_t picture = 0;
 
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgba(bytes(w, h), 0) {}

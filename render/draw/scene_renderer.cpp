@@ -1,6 +1,7 @@
 #include "render/draw/scene_renderer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -14,6 +15,16 @@ namespace rugosim {
 namespace {
 
 constexpr int kMsaaSamples = 4;
+// Incremental redraw: pixels of slack around every rectangle, for the GPU's float arithmetic
+// (far below a pixel); what one more pass costs, counted in pixels of a larger rectangle; at
+// most this many passes; and past this share of the frame, a full redraw.
+constexpr int kDirtyMarginPx = 2;
+constexpr std::int64_t kPassCostPx = 128 * 128;
+constexpr std::size_t kMaxPasses = 6;
+constexpr double kFullRedrawShare = 0.6;
+
+// Picture numbers, unique in the process (Image::picture): two renderers never share one.
+std::atomic<std::uint64_t> next_picture{1};
 constexpr std::size_t kMaxBodies = std::size_t{1} << 22;  // indices exact in shader arithmetic
 
 struct FillVertex {
@@ -140,6 +151,11 @@ SceneRenderer::SceneRenderer(GlContext& context, std::vector<BodyLook> bodies,
     throw std::invalid_argument("renderer: at most 4,194,304 bodies can be drawn");
   }
   settings_.detail.pixel_size = settings_.camera.pixel_size();
+  const double scale = std::max(1.0, settings_.camera.height_px / 720.0);
+  const bool by_lambda = settings_.overlays.rugosity;
+  const double width = settings_.outline_px * scale * (by_lambda ? 2.0 : 1.0);
+  half_width_ = static_cast<float>(0.5 * width);
+  fringe_ = settings_.anti_aliasing == AntiAliasing::kShader ? 1.f : 0.f;
   context_.make_current();
   gpu_ = std::make_unique<GpuState>(gl_);
   for (const BodyLook& body : bodies_)
@@ -211,12 +227,43 @@ void SceneRenderer::build_meshes() {
                                         static_cast<float>(m.y()), side, level});
       }
     }
+    const auto outline_first = static_cast<std::uint32_t>(outline_indices.size());
     for (std::uint32_t i = 0; i < n; ++i) {
       const std::uint32_t k = (i + 1) % static_cast<std::uint32_t>(n);
       for (const std::uint32_t v : {2 * i, 2 * i + 1, 2 * k, 2 * k, 2 * i + 1, 2 * k + 1}) {
         outline_indices.push_back(ring + v);
       }
     }
+    // The chunks' boxes hold the float positions the GPU draws, the outline's as the vertex
+    // shader widens them.
+    const auto fill_first = static_cast<std::uint32_t>(fill_indices.size() - parity.indices.size());
+    const std::size_t first_fill_chunk = fill_chunks_.size();
+    const std::size_t first_outline_chunk = outline_chunks_.size();
+    append_chunks(
+        fill_chunks_, body_index, fill_indices, fill_first,
+        static_cast<std::uint32_t>(parity.indices.size()), [&](std::uint32_t v) {
+          Aabb box;
+          box.extend(Vec2(static_cast<double>(fill[v].x), static_cast<double>(fill[v].y)));
+          return box;
+        });
+    const double reach_m =
+        static_cast<double>(half_width_ + fringe_) * settings_.camera.pixel_size();
+    append_chunks(
+        outline_chunks_, body_index, outline_indices, outline_first,
+        static_cast<std::uint32_t>(outline_indices.size()) - outline_first, [&](std::uint32_t v) {
+          const OutlineVertex& o = outline[v];
+          Aabb box;
+          const double offset = static_cast<double>(o.side) * reach_m;
+          box.extend(Vec2(static_cast<double>(o.x) + static_cast<double>(o.miter_x) * offset,
+                          static_cast<double>(o.y) + static_cast<double>(o.miter_y) * offset));
+          return box;
+        });
+    Aabb reach;
+    for (std::size_t c = first_fill_chunk; c < fill_chunks_.size(); ++c)
+      reach.extend(fill_chunks_[c].bounds);
+    for (std::size_t c = first_outline_chunk; c < outline_chunks_.size(); ++c)
+      reach.extend(outline_chunks_[c].bounds);
+    body_reach_.push_back(reach);
   }
   g.fill_count = static_cast<GLsizei>(fill_indices.size());
   g.outline_count = static_cast<GLsizei>(outline_indices.size());
@@ -360,21 +407,105 @@ bool SceneRenderer::same_picture(const FrameSnapshot& frame) const {
   return true;
 }
 
+std::optional<std::vector<PixelRect>> SceneRenderer::dirty_rects(const FrameSnapshot& frame) const {
+  // Contacts and velocities change nearly every frame all over it, and MSAA resolves the
+  // whole frame: those are drawn whole.
+  if (!settings_.incremental || settings_.anti_aliasing == AntiAliasing::kMsaa ||
+      settings_.overlays.contacts || settings_.overlays.velocity || !last_drawn_ ||
+      last_drawn_->bodies.size() != frame.bodies.size() || frame.bodies.size() != bodies_.size()) {
+    return std::nullopt;
+  }
+  const Camera& camera = settings_.camera;
+  std::vector<PixelRect> rects;
+  for (std::size_t i = 0; i < frame.bodies.size(); ++i) {
+    const Transform2& now = frame.bodies[i].placement;
+    const Transform2& before = last_drawn_->bodies[i].placement;
+    if (now.cos_angle() == before.cos_angle() && now.sin_angle() == before.sin_angle() &&
+        now.translation() == before.translation()) {
+      continue;
+    }
+    rects.push_back(window_rect(body_reach_[i], before, camera, kDirtyMarginPx));
+    rects.push_back(window_rect(body_reach_[i], now, camera, kDirtyMarginPx));
+  }
+  std::vector<PixelRect> merged = merge_rects(std::move(rects), kPassCostPx, kMaxPasses);
+  std::int64_t area = 0;
+  for (const PixelRect& r : merged)
+    area += r.area();
+  const auto frame_area = static_cast<double>(camera.width_px) * camera.height_px;
+  if (static_cast<double>(area) > kFullRedrawShare * frame_area) return std::nullopt;
+  return merged;
+}
+
 void SceneRenderer::draw(const FrameSnapshot& frame) {
   // A scene at rest (every body asleep or still) keeps its last picture: nothing is drawn.
   if (same_picture(frame)) {
     ++frames_reused_;
     return;
   }
-  last_drawn_ = frame;
-  GpuState& g = *gpu_;
-  const bool msaa = settings_.anti_aliasing == AntiAliasing::kMsaa;
-  const float fringe = settings_.anti_aliasing == AntiAliasing::kShader ? 1.f : 0.f;
-  const double scale = std::max(1.0, settings_.camera.height_px / 720.0);
+  const std::optional<std::vector<PixelRect>> rects = dirty_rects(frame);
+  // Until this frame is drawn the framebuffer holds no frame that a later one can start from.
+  last_drawn_.reset();
+  picture_ = 0;
   context_.make_current();
   upload_transforms(frame);
   gl_.Viewport(0, 0, context_.width(), context_.height());
+  if (!rects) {
+    draw_pass(frame, nullptr);
+  } else {
+    std::vector<Transform2> placements;
+    placements.reserve(frame.bodies.size());
+    for (const BodyPose& pose : frame.bodies)
+      placements.push_back(pose.placement);
+    placed_fill_ = place_chunks(fill_chunks_, placements, settings_.camera, kDirtyMarginPx);
+    placed_outline_ = place_chunks(outline_chunks_, placements, settings_.camera, kDirtyMarginPx);
+    gl_.Enable(GL_SCISSOR_TEST);
+    for (const PixelRect& rect : *rects) {
+      draw_pass(frame, &rect);
+      pixels_redrawn_ += rect.area();
+    }
+    gl_.Disable(GL_SCISSOR_TEST);
+    ++frames_partial_;
+  }
+  GpuState& g = *gpu_;
+  if (settings_.anti_aliasing == AntiAliasing::kMsaa) {
+    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, g.msaa_framebuffer);
+    gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, context_.framebuffer());
+    gl_.BlitFramebuffer(0, 0, context_.width(), context_.height(), 0, 0, context_.width(),
+                        context_.height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  const GLenum error = gl_.GetError();
+  if (error != GL_NO_ERROR) {
+    throw std::runtime_error("renderer: OpenGL error " + std::to_string(error) +
+                             " while drawing frame " + std::to_string(frame.frame));
+  }
+  last_drawn_ = frame;
+  picture_ = next_picture.fetch_add(1, std::memory_order_relaxed);
+}
+
+void SceneRenderer::draw_pass(const FrameSnapshot& frame, const PixelRect* rect) {
+  GpuState& g = *gpu_;
+  const bool msaa = settings_.anti_aliasing == AntiAliasing::kMsaa;
+  // The whole index buffer, or the chunks that reach the rectangle, in their order.
+  std::vector<GLsizei> counts;
+  std::vector<const void*> offsets;
+  auto draw_triangles = [&](GLsizei whole, const std::vector<MeshChunk>& chunks,
+                            const std::vector<PixelRect>& placed) {
+    if (rect == nullptr) {
+      gl_.DrawElements(GL_TRIANGLES, whole, GL_UNSIGNED_INT, nullptr);
+      return;
+    }
+    counts.clear();
+    offsets.clear();
+    for (const IndexRange& r : select_chunks(chunks, placed, *rect)) {
+      counts.push_back(static_cast<GLsizei>(r.count));
+      offsets.push_back(reinterpret_cast<const void*>(std::size_t{r.first} * sizeof(GLuint)));
+    }
+    if (counts.empty()) return;
+    gl_.MultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(),
+                          static_cast<GLsizei>(counts.size()));
+  };
   gl_.Disable(GL_BLEND);
+  if (rect != nullptr) gl_.Scissor(rect->x0, rect->y0, rect->x1 - rect->x0, rect->y1 - rect->y0);
 
   // 1. Background by a clear, then every fill in one draw by XOR.
   gl_.BindFramebuffer(GL_FRAMEBUFFER, msaa ? g.msaa_framebuffer : context_.framebuffer());
@@ -391,7 +522,7 @@ void SceneRenderer::draw(const FrameSnapshot& frame) {
   gl_.BindTexture(GL_TEXTURE_BUFFER, g.palette_texture);
   gl_.Uniform1i(g.fill.uniform("palette"), 1);
   gl_.BindVertexArray(g.fill_vao);
-  gl_.DrawElements(GL_TRIANGLES, g.fill_count, GL_UNSIGNED_INT, nullptr);
+  draw_triangles(g.fill_count, fill_chunks_, placed_fill_);
   gl_.Disable(GL_COLOR_LOGIC_OP);
 
   // 2. Outlines, blended over the fills.
@@ -404,17 +535,15 @@ void SceneRenderer::draw(const FrameSnapshot& frame) {
   gl_.ActiveTexture(GL_TEXTURE1);
   gl_.BindTexture(GL_TEXTURE_BUFFER, g.palette_texture);
   gl_.Uniform1i(g.outline.uniform("palette"), 1);
-  const bool by_lambda = settings_.overlays.rugosity;
-  const double width = settings_.outline_px * scale * (by_lambda ? 2.0 : 1.0);
   gl_.Uniform1f(g.outline.uniform("metres_per_pixel"),
                 static_cast<float>(settings_.camera.pixel_size()));
-  gl_.Uniform1f(g.outline.uniform("half_width"), static_cast<float>(0.5 * width));
-  gl_.Uniform1f(g.outline.uniform("fringe"), fringe);
-  gl_.Uniform1i(g.outline.uniform("colour_by_lambda"), by_lambda ? 1 : 0);
+  gl_.Uniform1f(g.outline.uniform("half_width"), half_width_);
+  gl_.Uniform1f(g.outline.uniform("fringe"), fringe_);
+  gl_.Uniform1i(g.outline.uniform("colour_by_lambda"), settings_.overlays.rugosity ? 1 : 0);
   gl_.BindVertexArray(g.outline_vao);
-  gl_.DrawElements(GL_TRIANGLES, g.outline_count, GL_UNSIGNED_INT, nullptr);
+  draw_triangles(g.outline_count, outline_chunks_, placed_outline_);
 
-  // 3. Overlays.
+  // 3. Overlays (never with a rectangle: see dirty_rects).
   if (settings_.overlays.contacts || settings_.overlays.velocity) {
     overlay_builder_.clear();
     overlay_builder_.add_frame(frame, fixed_, settings_.overlays);
@@ -431,27 +560,16 @@ void SceneRenderer::draw(const FrameSnapshot& frame) {
       }
       gl_.BufferSubData(GL_ARRAY_BUFFER, 0, bytes, v.data());
       g.overlay.use();
-      gl_.Uniform1f(g.overlay.uniform("fringe"), fringe);
+      gl_.Uniform1f(g.overlay.uniform("fringe"), fringe_);
       gl_.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(v.size()));
     }
   }
   gl_.Disable(GL_BLEND);
   gl_.BindVertexArray(0);
-
-  if (msaa) {
-    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, g.msaa_framebuffer);
-    gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, context_.framebuffer());
-    gl_.BlitFramebuffer(0, 0, context_.width(), context_.height(), 0, 0, context_.width(),
-                        context_.height(), GL_COLOR_BUFFER_BIT, GL_NEAREST);
-  }
-  const GLenum error = gl_.GetError();
-  if (error != GL_NO_ERROR) {
-    throw std::runtime_error("renderer: OpenGL error " + std::to_string(error) +
-                             " while drawing frame " + std::to_string(frame.frame));
-  }
 }
 
 void SceneRenderer::read(Image& image) const {
+  if (picture_ != 0 && image.picture == picture_) return;  // a scene at rest: already there
   image.width = context_.width();
   image.height = context_.height();
   image.rgba.resize(Image::bytes(image.width, image.height));
@@ -460,6 +578,7 @@ void SceneRenderer::read(Image& image) const {
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
   // The frame was drawn upside down, so GL's bottom-up rows are the image's top-down rows.
   gl_.ReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  image.picture = picture_;
 }
 
 }  // namespace rugosim

@@ -7,6 +7,14 @@
 //   3. overlays: contacts and velocities.
 // Edges are anti-aliased either by the shaders (coverage ramps on outlines and overlays, which
 // cover the fills' edges) or by 4× MSAA of every pass.
+//
+// Incremental redraw: the framebuffer keeps the last frame, and when only some bodies moved
+// (no contact or velocity overlay, no MSAA) only the window rectangles they covered then or
+// cover now are cleared and drawn again (dirty_rects.h), each with just the runs of triangles
+// that reach it (mesh_chunks.h). Every pixel outside them is already what a full redraw would
+// give, and inside them every triangle that covers a pixel is drawn, in the same order, so the
+// picture is bit for bit that of a full redraw (tested); a still floor or container costs
+// nothing once drawn.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +28,8 @@
 #include "engine/geometry/periodic_bspline.h"
 #include "render/color.h"
 #include "render/draw/camera.h"
+#include "render/draw/dirty_rects.h"
+#include "render/draw/mesh_chunks.h"
 #include "render/draw/overlay_geometry.h"
 #include "render/draw/rugosity_detail.h"
 #include "render/gl/gl_context.h"
@@ -49,6 +59,7 @@ struct RenderSettings {
   Overlays overlays;
   double outline_px = 1.5;  // px at 720 lines; scaled with the frame's height
   DetailSettings detail;    // pixel_size is taken from the camera
+  bool incremental = true;  // redraw only where bodies moved (the same pixels as a full redraw)
 };
 
 class SceneRenderer {
@@ -66,8 +77,14 @@ class SceneRenderer {
   void draw(const FrameSnapshot& frame);
   // Frames draw() found unchanged and did not draw.
   std::size_t frames_reused() const { return frames_reused_; }
-  // Reads what draw() made, rows top first.
+  // Frames draw() redrew only in part, and the pixels it cleared and drew again for them.
+  std::size_t frames_partial() const { return frames_partial_; }
+  std::int64_t pixels_redrawn() const { return pixels_redrawn_; }
+  // Reads what draw() made, rows top first, and numbers the image with the picture
+  // (Image::picture); an image that already holds this picture is left as it is.
   void read(Image& image) const;
+  // The number of the picture in the framebuffer: a new one each time draw() draws.
+  std::uint64_t picture() const { return picture_; }
   Image render(const FrameSnapshot& frame) {
     draw(frame);
     Image image;
@@ -84,6 +101,11 @@ class SceneRenderer {
   void create_targets();
   void upload_transforms(const FrameSnapshot& frame);
   bool same_picture(const FrameSnapshot& frame) const;
+  // The rectangles to redraw after last_drawn_, or nullopt for the whole frame.
+  std::optional<std::vector<PixelRect>> dirty_rects(const FrameSnapshot& frame) const;
+  // Clears and draws the fills, outlines and overlays: everywhere when `rect` is null, else
+  // inside it with the chunks that reach it (placed_fill_ and placed_outline_, this frame's).
+  void draw_pass(const FrameSnapshot& frame, const PixelRect* rect);
 
   GlContext& context_;
   const GlApi& gl_;
@@ -91,9 +113,17 @@ class SceneRenderer {
   RenderSettings settings_;
   std::vector<DetailOutline> outlines_;
   std::vector<bool> fixed_;
+  float half_width_ = 0.f;  // px, half the outline's visible width
+  float fringe_ = 0.f;      // px of anti-aliasing ramp beyond it
+  std::vector<MeshChunk> fill_chunks_, outline_chunks_;
+  std::vector<Aabb> body_reach_;  // m, body frame: everything a body's triangles can cover
+  std::vector<PixelRect> placed_fill_, placed_outline_;  // the chunks' rectangles this frame
   OverlayBuilder overlay_builder_;
   std::optional<FrameSnapshot> last_drawn_;
   std::size_t frames_reused_ = 0;
+  std::uint64_t picture_ = 0;
+  std::size_t frames_partial_ = 0;
+  std::int64_t pixels_redrawn_ = 0;
   std::unique_ptr<GpuState> gpu_;
 };
 

@@ -63,6 +63,8 @@ void GlApi::load(const std::function<void*(const char*)>& get) {
   RUGOSIM_GL(VertexAttribPointer);
   RUGOSIM_GL(DrawArrays);
   RUGOSIM_GL(DrawElements);
+  RUGOSIM_GL(MultiDrawElements);
+  RUGOSIM_GL(Scissor);
   RUGOSIM_GL(Enable);
   RUGOSIM_GL(Disable);
   RUGOSIM_GL(BlendFunc);

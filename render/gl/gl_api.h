@@ -55,6 +55,8 @@ struct GlApi {
   PFNGLVERTEXATTRIBPOINTERPROC VertexAttribPointer = nullptr;
   PFNGLDRAWARRAYSPROC DrawArrays = nullptr;
   PFNGLDRAWELEMENTSPROC DrawElements = nullptr;
+  PFNGLMULTIDRAWELEMENTSPROC MultiDrawElements = nullptr;
+  PFNGLSCISSORPROC Scissor = nullptr;
   PFNGLENABLEPROC Enable = nullptr;
   PFNGLDISABLEPROC Disable = nullptr;
   PFNGLBLENDFUNCPROC BlendFunc = nullptr;
