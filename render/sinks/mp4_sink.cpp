@@ -77,7 +77,9 @@ class Dictionary {
 
 }  // namespace
 
-void quiet_ffmpeg_logs() { av_log_set_level(AV_LOG_ERROR); }
+void quiet_ffmpeg_logs() {
+  av_log_set_level(AV_LOG_ERROR);
+}
 
 bool mp4_preset_is_valid(std::string_view preset) {
   return std::find(kPresets.begin(), kPresets.end(), preset) != kPresets.end();
@@ -296,13 +298,19 @@ void Mp4Sink::write(const Image& frame, std::size_t index) {
   }
   Encoder& e = *encoder_;
   const std::string what = std::string("encoding frame ").append(std::to_string(index));
-  // The encoder may still hold a reference to the previous frame's buffers.
+  // The encoder may still hold a reference to the previous frame's buffers (then this copies
+  // them: what they hold stays).
   e.check(av_frame_make_writable(e.frame.get()), what);
-  const std::uint8_t* const source[] = {frame.rgba.data()};
-  const int source_stride[] = {static_cast<int>(frame.stride())};
-  const int rows = sws_scale(e.scaler.get(), source, source_stride, 0, height_, e.frame->data,
-                             e.frame->linesize);
-  if (rows < 0) e.fail(std::string("converting frame ").append(std::to_string(index)), rows);
+  // The picture converted last time again (a scene at rest): its YUV is still in the frame.
+  if (frame.picture == 0 || frame.picture != converted_picture_) {
+    converted_picture_ = 0;
+    const std::uint8_t* const source[] = {frame.rgba.data()};
+    const int source_stride[] = {static_cast<int>(frame.stride())};
+    const int rows = sws_scale(e.scaler.get(), source, source_stride, 0, height_, e.frame->data,
+                               e.frame->linesize);
+    if (rows < 0) e.fail(std::string("converting frame ").append(std::to_string(index)), rows);
+    converted_picture_ = frame.picture;
+  }
   // Consecutive timestamps whatever the index: the clip has no gaps, and lasts frames / fps.
   e.frame->pts = e.next_pts++;
   ++frames_written_;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -50,7 +51,8 @@ class Mp4Sink final : public FrameSink {
   Mp4Sink& operator=(const Mp4Sink&) = delete;
 
   // Encodes one frame (alpha is ignored). Frames get consecutive timestamps whatever `index`
-  // says, so the clip lasts frames_written() / fps seconds. Throws SinkError for a frame whose
+  // says, so the clip lasts frames_written() / fps seconds. A frame numbered with the picture
+  // of the one before (Image::picture) is not converted again. Throws SinkError for a frame whose
   // size differs from the sink's (or whose pixel buffer does not match its size), for an
   // encoder or I/O failure, and after close().
   void write(const Image& frame, std::size_t index) override;
@@ -73,7 +75,8 @@ class Mp4Sink final : public FrameSink {
   int height_;             // px
   int keyframe_interval_;  // frames
   std::size_t frames_written_ = 0;
-  std::unique_ptr<Encoder> encoder_;  // null once closed
+  std::uint64_t converted_picture_ = 0;  // Image::picture of the frame's YUV, 0 if unknown
+  std::unique_ptr<Encoder> encoder_;     // null once closed
 };
 
 }  // namespace rugosim

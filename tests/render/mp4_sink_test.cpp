@@ -8,8 +8,10 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <signal.h>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <sys/resource.h>
@@ -160,6 +162,38 @@ TEST_F(Mp4SinkTest, TimestampsAreConsecutiveWhateverTheIndices) {
   const testing::VideoProbe probe = testing::probe_video(path);
   EXPECT_EQ(probe.frames, 5U);
   EXPECT_NEAR(probe.duration_s, 5 / 25.0, 1 / 25.0);
+}
+
+// A frame numbered with the picture of the frame before is not converted again, and the clip
+// is byte for byte the clip of converting every frame; a frame with another number (or none)
+// is converted.
+TEST_F(Mp4SinkTest, RepeatedPicturesAreEncodedAsIfConvertedAgain) {
+  auto encode = [&](const std::string& name, bool numbered) {
+    const std::string path = file(name);
+    Mp4Sink sink(path, 64, 48, Mp4Options{.fps = 25, .preset = "ultrafast"});
+    std::uint64_t number = 100;
+    for (int i = 0; i < 40; ++i) {
+      const int step = i < 10 ? i : (i < 30 ? 10 : i);  // moving, at rest for 20 frames, moving
+      Image image = moving_square(64, 48, step);
+      if (numbered) image.picture = step == 10 ? 77 : ++number;
+      sink.write(image, static_cast<std::size_t>(i));
+    }
+    sink.close();
+    return path;
+  };
+  const std::string numbered = encode("numbered.mp4", true);
+  const std::string plain = encode("plain.mp4", false);
+  EXPECT_EQ(testing::probe_video(numbered).frames, 40u);
+  auto bytes = [](const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+  };
+  const std::string bytes_a = bytes(numbered);
+  const std::string bytes_b = bytes(plain);
+  EXPECT_FALSE(bytes_a.empty());
+  EXPECT_EQ(bytes_a, bytes_b);
 }
 
 TEST_F(Mp4SinkTest, KilledRenderLeavesEveryCompletedFragment) {
