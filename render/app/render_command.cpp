@@ -13,6 +13,7 @@
 
 #include "render/app/clip_render.h"
 #include "render/app/commands.h"
+#include "render/app/frame_memory.h"
 #include "render/app/progress.h"
 #include "render/app/render_scene.h"
 #include "render/app/scene_input.h"
@@ -210,6 +211,7 @@ int run_render(const RenderOptions& o) {
     return kExitUsage;
   }
   choose_rasteriser_threads(o.gl_threads);
+  keep_frame_memory();
   const SigintGuard sigint;
   try {
     std::unique_ptr<FrameSink> sink;
