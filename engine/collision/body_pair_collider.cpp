@@ -103,9 +103,9 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
   for (const LeafPair& pair : leaf_pairs_) {
     const CubicSegment& seg_a = a.curve().segment(pair.segment_a);
     const CubicSegment seg_b = b.curve().segment(pair.segment_b).transformed(b_to_a);
-    const NearestPoints near = nearest_points(seg_a, seg_b);
-    if (near.distance <= crossing_distance(seg_a, seg_b)) {
-      if (const auto crossing = find_crossing(seg_a, seg_b)) {
+    const NearestPoints near = nearest_points(seg_a, seg_b, settings_);
+    if (near.distance <= crossing_distance(seg_a, seg_b, settings_)) {
+      if (const auto crossing = crossing_from(near, seg_a, seg_b, settings_)) {
         out.intersections.push_back({pair.segment_a, pair.segment_b, crossing->t_a, crossing->t_b,
                                      place_a.apply(crossing->point)});
         continue;

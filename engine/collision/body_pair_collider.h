@@ -8,12 +8,15 @@
 #include "engine/collision/aobb_tree.h"
 #include "engine/collision/collision_shape.h"
 #include "engine/collision/contact.h"
+#include "engine/collision/segment_distance.h"
 #include "engine/core/transform.h"
 
 namespace rugosim {
 
 class BodyPairCollider {
  public:
+  explicit BodyPairCollider(const NarrowPhaseSettings& settings = {}) : settings_(settings) {}
+
   // Fills `out` (cleared first, body indices left as they are) with what A and B, placed by
   // `place_a` and `place_b` (body frame -> world), have in common. Results are in world
   // coordinates. Reuses its buffers between calls: keep one collider per thread.
@@ -24,6 +27,7 @@ class BodyPairCollider {
   const std::vector<LeafPair>& last_leaf_pairs() const { return leaf_pairs_; }
 
  private:
+  NarrowPhaseSettings settings_;
   std::vector<LeafPair> leaf_pairs_;
   std::vector<Contact> candidates_;
 };

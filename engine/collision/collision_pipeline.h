@@ -30,6 +30,9 @@ struct CollisionCounts {
 
 class CollisionPipeline {
  public:
+  explicit CollisionPipeline(const NarrowPhaseSettings& narrow_phase = {})
+      : collider_(narrow_phase) {}
+
   // One manifold per body pair that crosses or touches within its bands, sorted by
   // (body_a, body_b) with body_a < body_b; body indices are positions in `bodies`.
   const std::vector<ContactManifold>& detect(std::span<const PlacedShape> bodies);

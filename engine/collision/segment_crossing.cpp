@@ -4,13 +4,14 @@
 namespace rugosim {
 
 std::optional<Crossing> crossing_from(const NearestPoints& nearest, const CubicSegment& a,
-                                      const CubicSegment& b) {
-  if (!(nearest.distance <= crossing_distance(a, b))) return std::nullopt;
+                                      const CubicSegment& b, const NarrowPhaseSettings& settings) {
+  if (!(nearest.distance <= crossing_distance(a, b, settings))) return std::nullopt;
   return Crossing{nearest.t_a, nearest.t_b, 0.5 * (nearest.point_a + nearest.point_b)};
 }
 
-std::optional<Crossing> find_crossing(const CubicSegment& a, const CubicSegment& b) {
-  return crossing_from(nearest_points(a, b), a, b);
+std::optional<Crossing> find_crossing(const CubicSegment& a, const CubicSegment& b,
+                                      const NarrowPhaseSettings& settings) {
+  return crossing_from(nearest_points(a, b, settings), a, b, settings);
 }
 
 }  // namespace rugosim

@@ -29,10 +29,12 @@ struct Crossing {
 };
 
 // A point where a and b (in the same frame) cross or touch, or nullopt if they are apart.
-std::optional<Crossing> find_crossing(const CubicSegment& a, const CubicSegment& b);
+std::optional<Crossing> find_crossing(const CubicSegment& a, const CubicSegment& b,
+                                      const NarrowPhaseSettings& settings = {});
 
-// The crossing implied by nearest points already computed for the same a and b.
+// The crossing implied by nearest points already computed for the same a, b and settings.
 std::optional<Crossing> crossing_from(const NearestPoints& nearest, const CubicSegment& a,
-                                      const CubicSegment& b);
+                                      const CubicSegment& b,
+                                      const NarrowPhaseSettings& settings = {});
 
 }  // namespace rugosim

@@ -15,17 +15,9 @@
 namespace rugosim {
 namespace {
 
-// Newton steps from the chord seed: enough for the linear convergence of a tangential touch
-// (f grows like the fourth power of the offset there), which is the slowest case that the
-// certificate can close.
-constexpr int kSeedIterations = 40;
 // Inside a rectangle of the search the seed is already close, and the rectangle is split if
-// the descent does not settle.
+// the descent does not settle (at most the seed's iterations).
 constexpr int kCellIterations = 6;
-// Halvings of the parameter intervals: past 2^-48 a rectangle's points agree to rounding.
-constexpr int kMaxDepth = 48;
-// Rectangles examined before giving up with the best pair found (never reached in the tests).
-constexpr int kMaxCells = 4096;
 
 struct Tolerances {
   double accuracy = 0.0;  // m
@@ -39,10 +31,12 @@ double coefficient_sum(const CubicSegment& c) {
   return sum;
 }
 
-Tolerances tolerances(const CubicSegment& a, const CubicSegment& b) {
+Tolerances tolerances(const CubicSegment& a, const CubicSegment& b,
+                      const NarrowPhaseSettings& settings) {
   const double size = std::max(a.hull_bounds().diagonal(), b.hull_bounds().diagonal());
   const double magnitude = std::max(coefficient_sum(a), coefficient_sum(b));
-  const double accuracy = 1e-12 * size + 64.0 * std::numeric_limits<double>::epsilon() * magnitude;
+  const double accuracy =
+      settings.relative_accuracy * size + 64.0 * std::numeric_limits<double>::epsilon() * magnitude;
   return {accuracy, 4.0 * accuracy};
 }
 
@@ -121,7 +115,8 @@ void push_children(const Cell& cell, double cutoff, std::vector<Cell>& heap) {
 
 // Step 4 of the header: best-first search from `best`, which the certificate could not close.
 Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const Tolerances& tol,
-                           Candidate best) {
+                           const NarrowPhaseSettings& settings, Candidate best) {
+  const int cell_iterations = std::min(kCellIterations, settings.seed_iterations);
   std::vector<Cell> heap;
   heap.reserve(64);
   Cell root;
@@ -130,7 +125,7 @@ Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const T
   root.deviation_a = chord_deviation(root.pa);
   root.deviation_b = chord_deviation(root.pb);
   push_children(root, best.distance - tol.accuracy, heap);
-  for (int examined = 0; !heap.empty() && examined < kMaxCells; ++examined) {
+  for (int examined = 0; !heap.empty() && examined < settings.max_cells; ++examined) {
     std::pop_heap(heap.begin(), heap.end(), farther);
     const Cell cell = heap.back();
     heap.pop_back();
@@ -147,36 +142,39 @@ Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const T
     if (best.distance <= tol.zero) break;
     if (certified_bound(a, b, box, at_seed) >= best.distance - tol.accuracy) continue;
     const LocalMinimum m =
-        descend_to_local_minimum(a, b, box, s, t, tol.zero * tol.zero, kCellIterations);
+        descend_to_local_minimum(a, b, box, s, t, tol.zero * tol.zero, cell_iterations);
     const double d = std::sqrt(m.distance2);
     if (d < best.distance) {
       // A new best: follow it out of the rectangle to its own minimum (or a crossing), so that
       // later rectangles are judged against the best value this basin can give.
-      const LocalMinimum polished = descend_to_local_minimum(a, b, ParameterBox{}, m.s, m.t,
-                                                             tol.zero * tol.zero, kSeedIterations);
+      const LocalMinimum polished = descend_to_local_minimum(
+          a, b, ParameterBox{}, m.s, m.t, tol.zero * tol.zero, settings.seed_iterations);
       best = {m.s, m.t, d};
       const double d_polished = std::sqrt(polished.distance2);
       if (d_polished < d) best = {polished.s, polished.t, d_polished};
     }
     if (best.distance <= tol.zero) break;
     if (certified_bound(a, b, box, m) >= best.distance - tol.accuracy) continue;
-    if (cell.depth < kMaxDepth) push_children(cell, best.distance - tol.accuracy, heap);
+    if (cell.depth < settings.max_depth) push_children(cell, best.distance - tol.accuracy, heap);
   }
   return best;
 }
 
 }  // namespace
 
-double nearest_points_accuracy(const CubicSegment& a, const CubicSegment& b) {
-  return tolerances(a, b).accuracy;
+double nearest_points_accuracy(const CubicSegment& a, const CubicSegment& b,
+                               const NarrowPhaseSettings& settings) {
+  return tolerances(a, b, settings).accuracy;
 }
 
-double crossing_distance(const CubicSegment& a, const CubicSegment& b) {
-  return tolerances(a, b).zero;
+double crossing_distance(const CubicSegment& a, const CubicSegment& b,
+                         const NarrowPhaseSettings& settings) {
+  return tolerances(a, b, settings).zero;
 }
 
-NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b) {
-  const Tolerances tol = tolerances(a, b);
+NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b,
+                             const NarrowPhaseSettings& settings) {
+  const Tolerances tol = tolerances(a, b, settings);
   const auto& pa = a.bezier();
   const auto& pb = b.bezier();
   const ParameterBox unit;
@@ -185,15 +183,15 @@ NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b) {
     return d <= tol.zero || certified_bound(a, b, unit, m) >= d - tol.accuracy;
   };
   const ChordPair seed = closest_on_chords(pa[0], pa[3], pb[0], pb[3]);
-  LocalMinimum m =
-      descend_to_local_minimum(a, b, unit, seed.u, seed.v, tol.zero * tol.zero, kSeedIterations);
+  LocalMinimum m = descend_to_local_minimum(a, b, unit, seed.u, seed.v, tol.zero * tol.zero,
+                                            settings.seed_iterations);
   bool done = settled(m);
   if (!done) {
     // Second chance before the search: nearly parallel pieces (resting contact) whose first
     // descent ran to an end.
     if (const auto middle = middle_of_chord_overlap(pa[0], pa[3], pb[0], pb[3])) {
-      const LocalMinimum m2 = descend_to_local_minimum(a, b, unit, middle->u, middle->v,
-                                                       tol.zero * tol.zero, kSeedIterations);
+      const LocalMinimum m2 = descend_to_local_minimum(
+          a, b, unit, middle->u, middle->v, tol.zero * tol.zero, settings.seed_iterations);
       if (m2.distance2 < m.distance2) {
         m = m2;
         done = settled(m);
@@ -201,7 +199,7 @@ NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b) {
     }
   }
   Candidate best{m.s, m.t, std::sqrt(m.distance2)};
-  if (!done) best = branch_and_bound(a, b, tol, best);
+  if (!done) best = branch_and_bound(a, b, tol, settings, best);
   NearestPoints out;
   out.t_a = best.s;
   out.t_b = best.t;

@@ -30,16 +30,34 @@
 // one, where no linear certificate can hold until the rectangles are tiny.
 //
 // Accuracy: the distance returned exceeds the true minimum by at most nearest_points_accuracy()
-// (1e-12 of the larger segment plus a rounding allowance), unless the rectangle budget is
-// spent (a pathological pair; the best pair found is returned). A pair at most
-// crossing_distance() apart is treated as touching, the search stops there, and
-// find_crossing() (segment_crossing.h) reports exactly those pairs.
+// (relative_accuracy, 1e-12 by default, of the larger segment plus a rounding allowance),
+// unless the search runs out of depth or rectangles (a pathological pair, or settings made
+// coarse on purpose; the best pair found is returned). A pair at most crossing_distance()
+// apart is treated as touching, the search stops there, and find_crossing()
+// (segment_crossing.h) reports exactly those pairs.
 #pragma once
 
 #include "engine/core/types.h"
 #include "engine/geometry/cubic_segment.h"
 
 namespace rugosim {
+
+// The knobs of the search (the accuracy presets of engine/dynamics/accuracy.h set them). The
+// defaults are those of the "normal" preset.
+struct NarrowPhaseSettings {
+  // Dimensionless: the certificate's slack, as a fraction of the larger segment's size.
+  double relative_accuracy = 1e-12;
+  // Newton steps of a descent from a seed (the chords' nearest points, or the middle of the
+  // stretch where they run side by side): enough for the linear convergence of a tangential
+  // touch, where f grows like the fourth power of the offset, the slowest case the certificate
+  // can close.
+  int seed_iterations = 40;
+  // Halvings of the parameter intervals in the search for seeds: past 2^-48 a rectangle's
+  // points agree to rounding.
+  int max_depth = 48;
+  // Rectangles examined before giving up with the best pair found.
+  int max_cells = 4096;
+};
 
 struct NearestPoints {
   double t_a = 0.0, t_b = 0.0;  // in [0, 1]
@@ -49,15 +67,18 @@ struct NearestPoints {
 };
 
 // Globally nearest points of a and b, given in the same frame.
-NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b);
+NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b,
+                             const NarrowPhaseSettings& settings = {});
 
-// How far above the true minimum nearest_points() may be, m: 1e-12 of the larger segment's
-// hull diagonal plus 64 roundings of the largest coordinate sum (evaluations far from the
-// origin cannot be more exact than that).
-double nearest_points_accuracy(const CubicSegment& a, const CubicSegment& b);
+// How far above the true minimum nearest_points() may be, m: relative_accuracy of the larger
+// segment's hull diagonal plus 64 roundings of the largest coordinate sum (evaluations far
+// from the origin cannot be more exact than that).
+double nearest_points_accuracy(const CubicSegment& a, const CubicSegment& b,
+                               const NarrowPhaseSettings& settings = {});
 
 // Distances at or below this are "zero", m: 4x the accuracy, so that touching or crossing
 // curves (true minimum 0) are always reported as such.
-double crossing_distance(const CubicSegment& a, const CubicSegment& b);
+double crossing_distance(const CubicSegment& a, const CubicSegment& b,
+                         const NarrowPhaseSettings& settings = {});
 
 }  // namespace rugosim

@@ -75,7 +75,7 @@ void append_event_row(std::string& out, const World& world, const ContactEvent& 
   out.push_back('\n');
 }
 
-std::string stats_json(const StepStats& s, double wall_time) {
+std::string stats_json(const StepStats& s, double wall_time, const Accuracy* accuracy) {
   std::string out = "{\n";
   auto counter = [&](std::string_view key, std::uint64_t value) {
     out.append("  \"").append(key).append("\": ");
@@ -101,6 +101,16 @@ std::string stats_json(const StepStats& s, double wall_time) {
   append_number(out, s.sim_time);
   out.append(",\n  \"wall_time\": ");
   append_number(out, wall_time);
+  if (accuracy != nullptr) {
+    out.append(",\n  \"accuracy\": {");
+    const char* separator = "";
+    for (const AccuracyKnob& knob : accuracy_knobs()) {
+      out.append(separator).append("\"").append(knob.key).append("\": ");
+      append_number(out, knob.get(*accuracy));
+      separator = ", ";
+    }
+    out.append("}");
+  }
   out.append("\n}\n");
   return out;
 }

@@ -8,6 +8,7 @@
 #include <string>
 #include <string_view>
 
+#include "engine/dynamics/accuracy.h"
 #include "engine/dynamics/event_record.h"
 #include "engine/dynamics/step_stats.h"
 #include "engine/dynamics/world.h"
@@ -34,7 +35,9 @@ void append_trajectory_rows(std::string& out, const World& world, std::size_t fr
 // Appends the events.csv row of one event, naming bodies by their World names.
 void append_event_row(std::string& out, const World& world, const ContactEvent& event);
 
-// stats.json: every StepStats counter, sim_time and wall_time (s), one key per line.
-std::string stats_json(const StepStats& stats, double wall_time);
+// stats.json: every StepStats counter, sim_time and wall_time (s), one key per line, then, when
+// given, "accuracy": the knobs the run used ({"max_step": 0.001, ...}, accuracy.h's keys).
+std::string stats_json(const StepStats& stats, double wall_time,
+                       const Accuracy* accuracy = nullptr);
 
 }  // namespace rugosim

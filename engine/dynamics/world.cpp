@@ -41,7 +41,8 @@ bool touches_crossing_pair(const std::vector<ContactManifold>& manifolds,
 
 }  // namespace
 
-World::World(WorldSettings settings) : settings_(std::move(settings)), sleep_(settings_.sleep) {
+World::World(WorldSettings settings)
+    : settings_(std::move(settings)), pipeline_(settings_.narrow_phase), sleep_(settings_.sleep) {
   if (!settings_.gravity.allFinite()) throw std::invalid_argument("gravity must be finite");
   if (!(std::isfinite(settings_.friction_gain) && settings_.friction_gain >= 0.0)) {
     throw std::invalid_argument("friction_gain must be finite and >= 0 (1/m)");
@@ -52,6 +53,15 @@ World::World(WorldSettings settings) : settings_(std::move(settings)), sleep_(se
   }
   if (settings_.max_bisections <= 0 || settings_.max_resolution_passes <= 0) {
     throw std::invalid_argument("max_bisections and max_resolution_passes must be > 0");
+  }
+  if (!(settings_.resolved_gap_fraction >= 0.0 && settings_.resolved_gap_fraction < 1.0)) {
+    throw std::invalid_argument("resolved_gap_fraction must be in [0, 1)");
+  }
+  const NarrowPhaseSettings& narrow = settings_.narrow_phase;
+  if (!(narrow.relative_accuracy > 0.0 && narrow.relative_accuracy < 1.0) ||
+      narrow.seed_iterations <= 0 || narrow.max_depth <= 0 || narrow.max_cells <= 0) {
+    throw std::invalid_argument(
+        "narrow phase: relative_accuracy must be in (0, 1) and the counts > 0");
   }
   if (!(settings_.sleep.time >= 0.0 && std::isfinite(settings_.sleep.time) &&
         settings_.sleep.tolerance >= 0.0 && std::isfinite(settings_.sleep.tolerance) &&
@@ -161,7 +171,8 @@ double World::back_off(double dt_full) {
 
 void World::resolve(const std::vector<ContactManifold>& manifolds, double time) {
   const ResolutionSettings resolution{settings_.gravity, settings_.friction_gain,
-                                      settings_.max_resolution_passes, settings_.max_step};
+                                      settings_.max_resolution_passes, settings_.max_step,
+                                      settings_.resolved_gap_fraction};
   ++stats_.steps;
   if (any_crossing(manifolds)) ++stats_.crossings;
   stats_.islands_woken += sleep_.wake_touched(bodies_, manifolds, time);

@@ -61,7 +61,11 @@ struct WorldSettings {
   int max_bisections = 60;
   // Passes of contact resolution per accepted state.
   int max_resolution_passes = 64;
-  bool record_events = true;  // keep a ContactEvent per impulse (events())
+  // A contact is resolved when it would close at most this fraction of its gap within a step
+  // (contact_resolution.h, "Resolved").
+  double resolved_gap_fraction = 1e-3;
+  NarrowPhaseSettings narrow_phase;  // the segment-pair search (segment_distance.h)
+  bool record_events = true;         // keep a ContactEvent per impulse (events())
   SleepSettings sleep;
 };
 
@@ -71,7 +75,8 @@ class World {
   static constexpr int kMaxConsecutiveFallbacks = 8;
 
   // Throws std::invalid_argument on non-finite gravity, a negative friction gain, steps that
-  // are not 0 < min_step <= max_step, or non-positive loop bounds.
+  // are not 0 < min_step <= max_step, non-positive loop bounds, or narrow-phase settings out
+  // of range (relative accuracy in (0, 1), positive counts).
   explicit World(WorldSettings settings = {});
 
   // Adds a body and returns its index (events and manifolds name bodies by it). The name is

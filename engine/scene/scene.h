@@ -78,13 +78,20 @@ struct RenderSpec {
   std::vector<std::string> overlays;
 };
 
+// world.accuracy: a preset ("draft", "normal", "precise") and knobs that override it, by the
+// keys of accuracy_knobs() (engine/dynamics/accuracy.h).
+struct AccuracySpec {
+  std::string preset = SceneDefaults::kAccuracy;
+  std::map<std::string, double> knobs;
+};
+
 struct Scene {
   int version = 1;
   std::string name;
   Vec2 gravity = Vec2(0.0, SceneDefaults::kGravityY);
   double duration = 0.0;  // s, > 0
   std::uint64_t seed = SceneDefaults::kSeed;
-  std::string accuracy = SceneDefaults::kAccuracy;
+  AccuracySpec accuracy;
   double q = SceneDefaults::kQ;
   double friction_gain = SceneDefaults::kFrictionGain;
   std::map<std::string, Material> materials;

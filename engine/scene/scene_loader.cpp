@@ -12,227 +12,20 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/dynamics/accuracy.h"
 #include "engine/geometry/shapes.h"
+#include "engine/scene/json_reader.h"
 
 namespace rugosim {
 namespace {
 
-using nlohmann::json;
+using namespace scene_json;
 
 // Upper bounds that keep a typo from asking for terabytes; far above any sensible scene.
 constexpr std::size_t kMaxSegments = 100000;
 constexpr int kMaxImageSide = 16384;  // px
 constexpr double kMaxFps = 1000.0;
 constexpr std::size_t kMinSegments = 4;
-
-std::string type_name(const json& v) {
-  switch (v.type()) {
-    case json::value_t::null:
-      return "null";
-    case json::value_t::boolean:
-      return "a boolean";
-    case json::value_t::string:
-      return "a string";
-    case json::value_t::array:
-      return "an array";
-    case json::value_t::object:
-      return "an object";
-    case json::value_t::binary:
-      return "binary data";
-    case json::value_t::discarded:
-      return "nothing";
-    default:
-      return "a number";
-  }
-}
-
-// A value as the user wrote it, shortened, for "got ..." in messages.
-std::string shown(const json& v) {
-  if (v.is_object()) return type_name(v);
-  if (v.is_array()) {
-    // A short array of plain values is shown as written, e.g. [1, 0].
-    const bool plain = v.size() <= 4 && std::none_of(v.begin(), v.end(), [](const json& e) {
-                         return e.is_structured();
-                       });
-    if (!plain) return "an array of " + std::to_string(v.size());
-  }
-  std::string text = v.dump();
-  if (text.size() > 40) text = text.substr(0, 37) + "...";
-  return text;
-}
-
-// RFC 6901: "~" and "/" in a key become "~0" and "~1".
-std::string pointer_token(std::string_view key) {
-  std::string out;
-  for (const char c : key) {
-    if (c == '~') {
-      out += "~0";
-    } else if (c == '/') {
-      out += "~1";
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
-std::string child(const std::string& path, std::string_view key) {
-  return path + "/" + pointer_token(key);
-}
-
-std::string child(const std::string& path, std::size_t index) {
-  return path + "/" + std::to_string(index);
-}
-
-// Bytes a terminal would not show (control characters, invalid UTF-8) as \xNN.
-std::string printable(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte >= 0x20 && byte < 0x7f) {
-      out += c;
-    } else {
-      char hex[8];
-      std::snprintf(hex, sizeof hex, "\\x%02x", byte);
-      out += hex;
-    }
-  }
-  return out;
-}
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j)
-    row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
-class Reader {
- public:
-  Reader(std::string file, std::vector<SceneError>& errors)
-      : file_(std::move(file)), errors_(errors) {}
-
-  void error(const std::string& path, std::string message) {
-    errors_.push_back({file_, path.empty() ? "/" : path, std::move(message), 0, 0});
-  }
-
-  // Reports keys of `object` not in `allowed`, with a suggestion when one is close.
-  void check_keys(const json& object, const std::string& path,
-                  const std::vector<std::string>& allowed) {
-    for (const auto& [key, value] : object.items()) {
-      if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-      std::string message = "unknown key \"" + key + "\"";
-      const std::string suggestion = closest_match(key, allowed);
-      if (!suggestion.empty()) message += "; did you mean \"" + suggestion + "\"?";
-      error(child(path, key), message);
-    }
-  }
-
-  bool is_object(const json& v, const std::string& path) {
-    if (v.is_object()) return true;
-    error(path, "expected an object, got " + shown(v));
-    return false;
-  }
-
-  bool number(const json& v, const std::string& path, double& out) {
-    if (!v.is_number()) {
-      error(path, "expected a number, got " + shown(v));
-      return false;
-    }
-    const double x = v.get<double>();
-    if (!std::isfinite(x)) {
-      error(path, "expected a finite number, got " + shown(v));
-      return false;
-    }
-    out = x;
-    return true;
-  }
-
-  // A finite number in [lo, hi] (either end may be open); `what` names the unit or range.
-  void ranged(const json& v, const std::string& path, double& out, double lo, bool lo_open,
-              double hi, bool hi_open, const std::string& expectation) {
-    double x = 0.0;
-    if (!number(v, path, x)) return;
-    const bool above = lo_open ? x > lo : x >= lo;
-    const bool below = hi_open ? x < hi : x <= hi;
-    if (!(above && below)) {
-      error(path, "expected " + expectation + ", got " + shown(v));
-      return;
-    }
-    out = x;
-  }
-
-  void positive(const json& v, const std::string& path, double& out, const std::string& unit) {
-    ranged(v, path, out, 0.0, true, std::numeric_limits<double>::infinity(), true,
-           "a number > 0" + (unit.empty() ? std::string() : " (" + unit + ")"));
-  }
-
-  void vec2(const json& v, const std::string& path, Vec2& out) {
-    if (!v.is_array() || v.size() != 2) {
-      error(path, "expected an array of 2 numbers [x, y], got " + shown(v));
-      return;
-    }
-    double x = 0.0, y = 0.0;
-    const bool ok_x = number(v[0], child(path, 0), x);
-    const bool ok_y = number(v[1], child(path, 1), y);
-    if (ok_x && ok_y) out = Vec2(x, y);
-  }
-
-  void boolean(const json& v, const std::string& path, bool& out) {
-    if (!v.is_boolean()) {
-      error(path, "expected true or false, got " + shown(v));
-      return;
-    }
-    out = v.get<bool>();
-  }
-
-  void string(const json& v, const std::string& path, std::string& out) {
-    if (!v.is_string()) {
-      error(path, "expected a string, got " + shown(v));
-      return;
-    }
-    out = v.get<std::string>();
-  }
-
-  void count(const json& v, const std::string& path, std::size_t& out, std::size_t lo,
-             std::size_t hi, const std::string& what) {
-    const std::string expectation =
-        "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (" + what + ")";
-    if (!v.is_number_integer()) {
-      error(path, "expected " + expectation + ", got " + shown(v));
-      return;
-    }
-    if (v.is_number_unsigned() || v.get<std::int64_t>() >= 0) {
-      const auto n = v.get<std::uint64_t>();
-      if (n >= lo && n <= hi) {
-        out = static_cast<std::size_t>(n);
-        return;
-      }
-    }
-    error(path, "expected " + expectation + ", got " + shown(v));
-  }
-
-  void seed(const json& v, const std::string& path, std::uint64_t& out) {
-    if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<std::int64_t>() < 0)) {
-      error(path, "expected an integer in [0, 2^64 - 1], got " + shown(v));
-      return;
-    }
-    out = v.get<std::uint64_t>();
-  }
-
- private:
-  std::string file_;
-  std::vector<SceneError>& errors_;
-};
 
 Material read_material(Reader& r, const json& v, const std::string& path) {
   Material m;
@@ -418,9 +211,8 @@ void read_rugosity(Reader& r, const json& v, const std::string& path, std::size_
 void read_colour(Reader& r, const json& v, const std::string& path, std::string& colour) {
   r.string(v, path, colour);
   const bool hex = (colour.size() == 7 || colour.size() == 4) && colour[0] == '#' &&
-                   std::all_of(colour.begin() + 1, colour.end(), [](char d) {
-                     return std::isxdigit(static_cast<unsigned char>(d));
-                   });
+                   std::all_of(colour.begin() + 1, colour.end(),
+                               [](char d) { return std::isxdigit(static_cast<unsigned char>(d)); });
   if (v.is_string() && !hex) {
     r.error(path, "expected a colour \"#rrggbb\" or \"#rgb\", got " + shown(v));
   }
@@ -560,6 +352,60 @@ void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& 
   }
 }
 
+void read_preset(Reader& r, const json& v, const std::string& path, std::string& preset) {
+  r.string(v, path, preset);
+  const std::vector<std::string>& presets = accuracy_preset_names();
+  if (v.is_string() && std::find(presets.begin(), presets.end(), preset) == presets.end()) {
+    std::string message = "expected \"draft\", \"normal\" or \"precise\", got " + shown(v);
+    const std::string suggestion = closest_match(preset, presets);
+    if (!suggestion.empty()) message += " (did you mean \"" + suggestion + "\"?)";
+    r.error(path, message);
+  }
+}
+
+// "accuracy": a preset's name, or {"preset": name, knob: value, ...} (engine/dynamics/accuracy.h).
+void read_accuracy(Reader& r, const json& v, const std::string& path, Scene& scene) {
+  if (v.is_string()) {
+    read_preset(r, v, path, scene.accuracy.preset);
+    return;
+  }
+  if (!v.is_object()) {
+    r.error(path,
+            "expected a preset (\"draft\", \"normal\" or \"precise\") or an object of "
+            "accuracy knobs, got " +
+                shown(v));
+    return;
+  }
+  std::vector<std::string> keys = {"preset"};
+  for (const AccuracyKnob& knob : accuracy_knobs())
+    keys.emplace_back(knob.key);
+  r.check_keys(v, path, keys);
+  if (v.contains("preset"))
+    read_preset(r, v["preset"], child(path, "preset"), scene.accuracy.preset);
+  for (const AccuracyKnob& knob : accuracy_knobs()) {
+    const std::string key(knob.key);
+    if (!v.contains(key)) continue;
+    const json& value = v[key];
+    const std::string at = child(path, key);
+    if (!value.is_number() || (knob.integer && !value.is_number_integer()) ||
+        !knob.valid(value.get<double>())) {
+      r.error(at, "expected " + knob.expectation() + ", got " + shown(value));
+      continue;
+    }
+    scene.accuracy.knobs[key] = value.get<double>();
+  }
+  if (const std::optional<Accuracy> preset = accuracy_preset(scene.accuracy.preset)) {
+    Accuracy resolved = *preset;
+    for (const auto& [key, value] : scene.accuracy.knobs)
+      find_accuracy_knob(key)->set(resolved, value);
+    if (resolved.toi_tolerance > resolved.max_step) {
+      r.error(child(path, v.contains("toi_tolerance") ? "toi_tolerance" : "max_step"),
+              "toi_tolerance (" + shown(json(resolved.toi_tolerance)) +
+                  " s) must not exceed max_step (" + shown(json(resolved.max_step)) + " s)");
+    }
+  }
+}
+
 void read_world(Reader& r, const json& v, const std::string& path, Scene& scene) {
   if (!r.is_object(v, path)) return;
   r.check_keys(v, path, {"gravity", "duration", "seed", "accuracy", "q", "friction_gain"});
@@ -567,19 +413,7 @@ void read_world(Reader& r, const json& v, const std::string& path, Scene& scene)
   if (v.contains("duration"))
     r.positive(v["duration"], child(path, "duration"), scene.duration, "s");
   if (v.contains("seed")) r.seed(v["seed"], child(path, "seed"), scene.seed);
-  if (v.contains("accuracy")) {
-    const std::string at = child(path, "accuracy");
-    r.string(v["accuracy"], at, scene.accuracy);
-    static const std::vector<std::string> presets = {"draft", "normal", "precise"};
-    if (v["accuracy"].is_string() &&
-        std::find(presets.begin(), presets.end(), scene.accuracy) == presets.end()) {
-      std::string message =
-          "expected \"draft\", \"normal\" or \"precise\", got " + shown(v["accuracy"]);
-      const std::string suggestion = closest_match(scene.accuracy, presets);
-      if (!suggestion.empty()) message += " (did you mean \"" + suggestion + "\"?)";
-      r.error(at, message);
-    }
-  }
+  if (v.contains("accuracy")) read_accuracy(r, v["accuracy"], child(path, "accuracy"), scene);
   if (v.contains("q")) {
     r.ranged(v["q"], child(path, "q"), scene.q, 0.0, true, 1.0, false, "a number in (0, 1]");
   }

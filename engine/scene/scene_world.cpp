@@ -45,18 +45,24 @@ std::string body_path(std::size_t i) {
 
 }  // namespace
 
+Accuracy scene_accuracy(const Scene& scene) {
+  std::optional<Accuracy> accuracy = accuracy_preset(scene.accuracy.preset);
+  if (!accuracy) {
+    throw std::invalid_argument("unknown accuracy preset \"" + scene.accuracy.preset + "\"");
+  }
+  for (const auto& [key, value] : scene.accuracy.knobs) {
+    const AccuracyKnob* knob = find_accuracy_knob(key);
+    if (knob == nullptr) throw std::invalid_argument("unknown accuracy knob \"" + key + "\"");
+    knob->set(*accuracy, value);
+  }
+  return *accuracy;
+}
+
 WorldSettings world_settings(const Scene& scene) {
   WorldSettings settings;
   settings.gravity = scene.gravity;
   settings.friction_gain = scene.friction_gain;
-  if (scene.accuracy == "draft") {
-    settings.max_step = 4e-3;
-  } else if (scene.accuracy == "precise") {
-    settings.max_step = 2.5e-4;
-  } else {
-    settings.max_step = 1e-3;
-  }
-  return settings;
+  return with_accuracy(settings, scene_accuracy(scene));
 }
 
 std::vector<RigidBodyDesc> body_descriptions(const Scene& scene) {

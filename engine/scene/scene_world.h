@@ -7,14 +7,18 @@
 #include <memory>
 #include <vector>
 
+#include "engine/dynamics/accuracy.h"
 #include "engine/dynamics/world.h"
 #include "engine/scene/scene.h"
 #include "engine/scene/scene_error.h"
 
 namespace rugosim {
 
-// The World settings of an accuracy preset ("draft", "normal", "precise"): for now the longest
-// step (4, 1 and 0.25 ms); the other knobs keep their defaults.
+// The knobs of the scene's accuracy: its preset's, with its own knobs on top. Throws
+// std::invalid_argument for an unknown preset or knob (which the loader rejects).
+Accuracy scene_accuracy(const Scene& scene);
+
+// The World settings of the scene: gravity, friction gain and scene_accuracy().
 WorldSettings world_settings(const Scene& scene);
 
 // The body descriptions of the scene, in order (throws std::invalid_argument from the shape

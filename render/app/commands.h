@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "render/app/scene_input.h"
+
 namespace rugosim::app {
 
 // Exit 0 and a summary, or 2 and every error found.
@@ -19,7 +21,7 @@ struct SimulateOptions {
   std::string scene_path;
   std::optional<double> duration;  // s, overrides world.duration
   std::optional<double> fps;       // overrides render.fps: the trajectory's frame rate
-  std::optional<std::string> accuracy;
+  AccuracyOverride accuracy;
   std::string trajectory_path;  // empty: not written
   std::string events_path;
   std::string stats_path;
@@ -37,7 +39,7 @@ struct RenderOptions {
   std::string size;    // "WxH"; empty: render.size
   std::optional<double> fps;
   std::optional<double> duration;
-  std::optional<std::string> accuracy;
+  AccuracyOverride accuracy;
   int crf = 18;
   std::string preset = "medium";
   bool overwrite = false;  // -y
@@ -70,6 +72,7 @@ struct SnapshotOptions {
   std::string size;          // "WxH"; empty: the goldens' size, or render.size
   std::string backend = "osmesa";
   std::string anti_aliasing = "shader";
+  AccuracyOverride accuracy;
 };
 
 // Renders frames of a scene and compares them with golden PNGs (INTERFACE.md, `snapshot`), or

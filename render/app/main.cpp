@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 
 #include "engine/core/version.h"
+#include "render/app/accuracy_options.h"
 #include "render/app/commands.h"
 #include "render/app/scene_input.h"
 
@@ -31,15 +32,13 @@ int main(int argc, char** argv) {
 
   SimulateOptions sim;
   double duration = 0.0, fps = 0.0;
-  std::string accuracy;
   CLI::App* simulate = app.add_subcommand("simulate", "simulate a scene and write telemetry");
   simulate->add_option("SCENE", sim.scene_path, "scene file (JSON)")->required();
   simulate->add_option("--duration", duration, "simulated time, s (default: world.duration)")
       ->check(CLI::PositiveNumber);
   simulate->add_option("--fps", fps, "trajectory frames per second (default: render.fps)")
       ->check(CLI::PositiveNumber);
-  simulate->add_option("--accuracy", accuracy, "draft, normal or precise (default: the scene's)")
-      ->check(CLI::IsMember({"draft", "normal", "precise"}));
+  add_accuracy_options(*simulate, sim.accuracy);
   simulate->add_option("--trajectory", sim.trajectory_path, "write trajectory.csv here");
   simulate->add_option("--events", sim.events_path, "write events.csv (one row per impulse)");
   simulate->add_option("--stats", sim.stats_path, "write stats.json (step statistics)");
@@ -51,7 +50,6 @@ int main(int argc, char** argv) {
 
   RenderOptions render_options;
   double render_fps = 0.0, render_duration = 0.0;
-  std::string render_accuracy;
   std::vector<std::string> overlays;
   CLI::App* render = app.add_subcommand(
       "render", "render a scene off-screen to an MP4 clip, a PNG sequence or a film strip");
@@ -75,8 +73,7 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   render->add_option("--duration", render_duration, "simulated time, s (default: world.duration)")
       ->check(CLI::PositiveNumber);
-  render->add_option("--accuracy", render_accuracy, "draft, normal or precise")
-      ->check(CLI::IsMember({"draft", "normal", "precise"}));
+  add_accuracy_options(*render, render_options.accuracy);
   render->add_option("--crf", render_options.crf, "MP4: x264 constant rate factor 0..51")
       ->capture_default_str();
   render->add_option("--preset", render_options.preset, "MP4: x264 preset")->capture_default_str();
@@ -160,6 +157,7 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   snapshot->add_option("--aa", snap.anti_aliasing, "anti-aliasing: shader, msaa or none")
       ->capture_default_str();
+  add_accuracy_options(*snapshot, snap.accuracy);
   snapshot->footer(
       "Examples:\n"
       "  rugosim snapshot scenes/figure12a.json --golden tests/goldens --size 320x180 --update\n"
@@ -205,13 +203,11 @@ int main(int argc, char** argv) {
   if (simulate->parsed()) {
     if (simulate->count("--duration") > 0) sim.duration = duration;
     if (simulate->count("--fps") > 0) sim.fps = fps;
-    if (simulate->count("--accuracy") > 0) sim.accuracy = accuracy;
     return run_simulate(sim);
   }
   if (render->parsed()) {
     if (render->count("--fps") > 0) render_options.fps = render_fps;
     if (render->count("--duration") > 0) render_options.duration = render_duration;
-    if (render->count("--accuracy") > 0) render_options.accuracy = render_accuracy;
     if (render->count("--gl-threads") > 0) render_options.gl_threads = gl_threads;
     if (render->count("--overlay") > 0) {
       std::erase(overlays, std::string("none"));

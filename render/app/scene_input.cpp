@@ -1,5 +1,7 @@
 #include "render/app/scene_input.h"
 
+#include <stdexcept>
+
 #include <fmt/core.h>
 
 #include "engine/scene/scene_loader.h"
@@ -8,12 +10,21 @@
 namespace rugosim::app {
 
 std::optional<LoadedScene> load_scene_or_report(const std::string& path,
-                                                const std::optional<std::string>& accuracy) {
+                                                const AccuracyOverride& accuracy) {
   SceneLoad load = load_scene_file(path);
   std::vector<SceneError> errors = load.errors;
   SceneWorld built;
   if (load.ok()) {
-    if (accuracy) load.scene.accuracy = *accuracy;
+    if (accuracy.preset) load.scene.accuracy = AccuracySpec{*accuracy.preset, {}};
+    for (const auto& [key, value] : accuracy.knobs)
+      load.scene.accuracy.knobs[key] = value;
+    try {
+      (void)world_settings(load.scene);
+    } catch (const std::invalid_argument& e) {
+      // Only the options can get here: the loader checked the scene's own knobs.
+      fmt::print(stderr, "error: {} (with the accuracy options given)\n", e.what());
+      return std::nullopt;
+    }
     built = build_world(load.scene, path);
     errors = built.errors;
   }

@@ -2,6 +2,7 @@
 // every error printed to stderr (file, JSON path, expectation) for exit code 2.
 #pragma once
 
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -16,10 +17,17 @@ struct LoadedScene {
   std::unique_ptr<World> world;
 };
 
-// nullopt after printing the errors. `accuracy`, when given, replaces the scene's preset
-// before the World is built (the caller has checked it is a preset name).
+// What the command line says of the accuracy (--accuracy and the knob options).
+struct AccuracyOverride {
+  std::optional<std::string> preset;    // replaces the scene's accuracy, knobs and all
+  std::map<std::string, double> knobs;  // then override single knobs (accuracy_knobs() keys)
+};
+
+// nullopt after printing the errors. `accuracy` is applied to the scene before the World is
+// built (the caller has checked the preset's name and each knob's range); a time-of-impact
+// tolerance left above the longest step is reported as an error too.
 std::optional<LoadedScene> load_scene_or_report(const std::string& path,
-                                                const std::optional<std::string>& accuracy = {});
+                                                const AccuracyOverride& accuracy = {});
 
 // Exit codes of INTERFACE.md.
 inline constexpr int kExitOk = 0;

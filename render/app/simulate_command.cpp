@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include "engine/dynamics/telemetry.h"
+#include "engine/scene/scene_world.h"
 #include "render/app/atomic_file.h"
 #include "render/app/commands.h"
 #include "render/app/progress.h"
@@ -83,7 +84,8 @@ int run_simulate(const SimulateOptions& o) {
     trajectory.commit();
     events.commit();
     if (stats_file) {
-      stats_file->write(stats_json(world.stats(), wall));
+      const Accuracy accuracy = scene_accuracy(loaded->scene);
+      stats_file->write(stats_json(world.stats(), wall, &accuracy));
       stats_file->commit();
     }
     const StepStats& s = world.stats();

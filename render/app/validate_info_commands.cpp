@@ -17,7 +17,7 @@ int run_validate(const std::string& scene_path) {
   }
   fmt::print("{}: valid scene \"{}\": {} bodies ({} fixed), {} segments, {} s at accuracy {}\n",
              scene_path, loaded->scene.name, world.body_count(), fixed, segments,
-             loaded->scene.duration, loaded->scene.accuracy);
+             loaded->scene.duration, loaded->scene.accuracy.preset);
   return kExitOk;
 }
 

@@ -75,7 +75,8 @@ TEST(SceneLoader, ReadsTheContractExample) {
   EXPECT_EQ(s.gravity, Vec2(0.0, -9.81));
   EXPECT_EQ(s.duration, 4.0);
   EXPECT_EQ(s.seed, 7u);
-  EXPECT_EQ(s.accuracy, "normal");
+  EXPECT_EQ(s.accuracy.preset, "normal");
+  EXPECT_TRUE(s.accuracy.knobs.empty());
   ASSERT_EQ(s.bodies.size(), 2u);
   EXPECT_TRUE(s.bodies[0].fixed);
   EXPECT_EQ(s.bodies[0].shape.kind, ShapeKind::kBox);
@@ -110,7 +111,8 @@ TEST(SceneLoader, FillsDefaults) {
   EXPECT_EQ(s.seed, 0u);
   EXPECT_EQ(s.q, 0.9);
   EXPECT_EQ(s.friction_gain, 100.0);
-  EXPECT_EQ(s.accuracy, "normal");
+  EXPECT_EQ(s.accuracy.preset, "normal");
+  EXPECT_TRUE(s.accuracy.knobs.empty());
   EXPECT_EQ(s.bodies[0].shape.segments, 32u);
   EXPECT_EQ(s.bodies[0].material.density, Material::kDefaultDensity);
   // ε_max follows a bouncier ε up instead of making the material invalid.
@@ -167,6 +169,39 @@ TEST(SceneLoader, SuggestsCloseNames) {
   EXPECT_EQ(closest_match("densty", {"density", "restitution"}), "density");
   EXPECT_EQ(closest_match("xyz", {"density", "restitution"}), "");
   EXPECT_EQ(closest_match("density", {"density"}), "");  // not a typo
+}
+
+// world.accuracy: a preset's name, or an object with a preset and knobs on top of it; the
+// World gets exactly those knobs.
+TEST(SceneLoader, AccuracyIsAPresetOrAnObjectOfKnobs) {
+  const std::string bodies = R"("bodies": [{"name": "d", "shape": {"circle": {"radius": 0.2}}}])";
+  const SceneLoad named = parse_scene(
+      R"({"version": 1, "world": {"duration": 1, "accuracy": "draft"}, )" + bodies + "}",
+      "named.json");
+  ASSERT_TRUE(named.ok());
+  EXPECT_EQ(named.scene.accuracy.preset, "draft");
+  EXPECT_EQ(scene_accuracy(named.scene), *accuracy_preset("draft"));
+  const SceneLoad object = parse_scene(
+      R"({"version": 1, "world": {"duration": 1, "accuracy": {"preset": "precise",
+          "max_step": 0.002, "seed_depth": 12}}, )" +
+          bodies + "}",
+      "object.json");
+  ASSERT_TRUE(object.ok());
+  Accuracy expected = *accuracy_preset("precise");
+  expected.max_step = 0.002;
+  expected.seed_depth = 12;
+  EXPECT_EQ(scene_accuracy(object.scene), expected);
+  const WorldSettings world = world_settings(object.scene);
+  EXPECT_EQ(world.max_step, 0.002);
+  EXPECT_EQ(world.narrow_phase.max_depth, 12);
+  // Knobs alone apply to "normal".
+  const SceneLoad knobs = parse_scene(
+      R"({"version": 1, "world": {"duration": 1, "accuracy": {"contact_passes": 5}}, )" + bodies +
+          "}",
+      "knobs.json");
+  ASSERT_TRUE(knobs.ok());
+  EXPECT_EQ(scene_accuracy(knobs.scene).contact_passes, 5);
+  EXPECT_EQ(scene_accuracy(knobs.scene).max_step, 1e-3);
 }
 
 // Every bad scene of the suite is rejected at the expected path.

@@ -1,0 +1,130 @@
+#include "engine/dynamics/accuracy.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace rugosim {
+namespace {
+
+// A number as %g writes it (6 significant digits): 0.001, 1e-09, 200.
+std::string shown(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+}  // namespace
+
+void AccuracyKnob::set(Accuracy& a, double value) const {
+  if (integer) {
+    a.*count = static_cast<int>(value);
+  } else {
+    a.*real = value;
+  }
+}
+
+bool AccuracyKnob::valid(double value) const {
+  if (!std::isfinite(value)) return false;
+  if (integer && value != std::floor(value)) return false;
+  return (lo_open ? value > lo : value >= lo) && value <= hi;
+}
+
+std::string AccuracyKnob::expectation() const {
+  std::ostringstream text;
+  text << (integer ? "an integer in " : "a number in ") << (lo_open ? "(" : "[") << lo << ", " << hi
+       << "]";
+  if (!unit.empty()) text << " (" << unit << ")";
+  return text.str();
+}
+
+const std::vector<AccuracyKnob>& accuracy_knobs() {
+  static const std::vector<AccuracyKnob> knobs = {
+      {"max_step", "s", "the longest internal step", false, 0.0, true, 1.0, &Accuracy::max_step,
+       nullptr},
+      {"toi_tolerance", "s", "time-of-impact bisection stops at this step", false, 0.0, true, 1.0,
+       &Accuracy::toi_tolerance, nullptr},
+      {"max_bisections", "", "bisections of one step at most", true, 1, false, 200, nullptr,
+       &Accuracy::max_bisections},
+      {"newton_tolerance", "", "nearest-point accuracy, relative to the segments' size", false,
+       1e-15, false, 1e-3, &Accuracy::newton_tolerance, nullptr},
+      {"newton_iterations", "", "Newton steps from each seed", true, 1, false, 1000, nullptr,
+       &Accuracy::newton_iterations},
+      {"seed_depth", "", "subdivision depth of the search for seeds", true, 1, false, 60, nullptr,
+       &Accuracy::seed_depth},
+      {"contact_passes", "", "passes of collisions and micro-collisions per state", true, 1, false,
+       100000, nullptr, &Accuracy::contact_passes},
+      {"contact_threshold", "", "share of its gap a contact may close in a step unresolved", false,
+       0.0, false, 0.5, &Accuracy::contact_threshold, nullptr},
+  };
+  return knobs;
+}
+
+const AccuracyKnob* find_accuracy_knob(std::string_view key) {
+  for (const AccuracyKnob& knob : accuracy_knobs()) {
+    if (knob.key == key) return &knob;
+  }
+  return nullptr;
+}
+
+const std::vector<std::string>& accuracy_preset_names() {
+  static const std::vector<std::string> names = {"draft", "normal", "precise"};
+  return names;
+}
+
+// The values come from bench/accuracy_study.cpp (docs/accuracy/): what each knob buys, and what
+// it costs, on the validation and figure scenes.
+std::optional<Accuracy> accuracy_preset(std::string_view name) {
+  if (name == "normal") return Accuracy{};
+  if (name == "draft") {
+    Accuracy a;
+    a.max_step = 4e-3;
+    a.toi_tolerance = 1e-7;
+    a.max_bisections = 30;
+    a.newton_tolerance = 1e-9;
+    a.newton_iterations = 16;
+    a.seed_depth = 24;
+    a.contact_passes = 16;
+    a.contact_threshold = 1e-2;
+    return a;
+  }
+  if (name == "precise") {
+    Accuracy a;
+    a.max_step = 2.5e-4;
+    a.toi_tolerance = 1e-10;
+    a.max_bisections = 80;
+    a.newton_tolerance = 1e-13;
+    a.newton_iterations = 60;
+    a.seed_depth = 52;
+    a.contact_passes = 128;
+    a.contact_threshold = 1e-4;
+    return a;
+  }
+  return std::nullopt;
+}
+
+WorldSettings with_accuracy(WorldSettings base, const Accuracy& accuracy) {
+  for (const AccuracyKnob& knob : accuracy_knobs()) {
+    const double value = knob.get(accuracy);
+    if (!knob.valid(value)) {
+      throw std::invalid_argument("accuracy: " + std::string(knob.key) + " must be " +
+                                  knob.expectation() + ", got " + shown(value));
+    }
+  }
+  if (accuracy.toi_tolerance > accuracy.max_step) {
+    throw std::invalid_argument("accuracy: toi_tolerance (" + shown(accuracy.toi_tolerance) +
+                                " s) must not exceed max_step (" + shown(accuracy.max_step) +
+                                " s)");
+  }
+  base.max_step = accuracy.max_step;
+  base.min_step = accuracy.toi_tolerance;
+  base.max_bisections = accuracy.max_bisections;
+  base.max_resolution_passes = accuracy.contact_passes;
+  base.resolved_gap_fraction = accuracy.contact_threshold;
+  base.narrow_phase.relative_accuracy = accuracy.newton_tolerance;
+  base.narrow_phase.seed_iterations = accuracy.newton_iterations;
+  base.narrow_phase.max_depth = accuracy.seed_depth;
+  return base;
+}
+
+}  // namespace rugosim

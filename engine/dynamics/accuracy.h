@@ -1,0 +1,75 @@
+// The speed/accuracy trade (INTERFACE.md: `world.accuracy`; README, "Accuracy"): the knobs
+// that decide how closely the World follows the paper's model, and the three presets that set
+// them together. bench/accuracy_study.cpp measures every preset and every knob against closed
+// forms and against reference runs, and docs/accuracy/ holds what it found.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/dynamics/world.h"
+
+namespace rugosim {
+
+struct Accuracy {
+  // s: the longest internal step. Free flight is exact, so this sets how often contacts are
+  // looked for, how deep into its band a body gets before it is found, and how often resting
+  // bodies get their micro-collisions.
+  double max_step = 1e-3;
+  // s: a step whose end crosses is bisected back towards the first contact until it is this
+  // short (the time-of-impact tolerance; World's min_step).
+  double toi_tolerance = 1e-9;
+  // Bisections of one step at most.
+  int max_bisections = 60;
+  // Dimensionless: slack of the nearest-point certificate, as a fraction of the segments' size
+  // (NarrowPhaseSettings::relative_accuracy).
+  double newton_tolerance = 1e-12;
+  // Newton steps of each descent from a seed.
+  int newton_iterations = 40;
+  // Halvings of the parameter intervals when seeds are searched by subdivision.
+  int seed_depth = 48;
+  // Passes over the contacts of a state (collisions and micro-collisions) before the
+  // rigid-cluster fallback.
+  int contact_passes = 64;
+  // Dimensionless: a contact needs an impulse only while it would close more than this
+  // fraction of its gap within a step.
+  double contact_threshold = 1e-3;
+
+  friend bool operator==(const Accuracy&, const Accuracy&) = default;
+};
+
+// One knob: its scene key (also the CLI option, with '-' for '_'), unit and valid range.
+struct AccuracyKnob {
+  std::string_view key;
+  std::string_view unit;  // "s", or "" for dimensionless and counts
+  std::string_view help;  // what it sets, in a few words
+  bool integer = false;
+  double lo = 0.0;  // inclusive unless lo_open
+  bool lo_open = false;
+  double hi = 0.0;  // inclusive
+  double Accuracy::*real = nullptr;
+  int Accuracy::*count = nullptr;
+
+  double get(const Accuracy& a) const { return integer ? a.*count : a.*real; }
+  void set(Accuracy& a, double value) const;
+  bool valid(double value) const;
+  std::string expectation() const;  // e.g. "a number in (0, 1] (s)"
+};
+
+// Every knob, in the order above.
+const std::vector<AccuracyKnob>& accuracy_knobs();
+const AccuracyKnob* find_accuracy_knob(std::string_view key);
+
+// The presets' names, fastest first: "draft", "normal", "precise".
+const std::vector<std::string>& accuracy_preset_names();
+// The knobs of a preset, or nullopt for an unknown name. "normal" is Accuracy{}.
+std::optional<Accuracy> accuracy_preset(std::string_view name);
+
+// The World settings these knobs give, on top of `base` (gravity, friction, sleep, ...).
+// Throws std::invalid_argument when a knob is out of its range or the time-of-impact
+// tolerance exceeds the longest step.
+WorldSettings with_accuracy(WorldSettings base, const Accuracy& accuracy);
+
+}  // namespace rugosim

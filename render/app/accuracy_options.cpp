@@ -1,0 +1,44 @@
+#include "render/app/accuracy_options.h"
+
+#include <algorithm>
+#include <string>
+
+#include "engine/dynamics/accuracy.h"
+
+namespace rugosim::app {
+
+void add_accuracy_options(CLI::App& command, AccuracyOverride& out) {
+  command
+      .add_option_function<std::string>(
+          "--accuracy", [&out](const std::string& preset) { out.preset = preset; },
+          "draft, normal or precise: replaces the scene's accuracy (preset and knobs)")
+      ->check(CLI::IsMember(accuracy_preset_names()))
+      ->type_name("PRESET");
+  for (const AccuracyKnob& knob : accuracy_knobs()) {
+    std::string name = "--" + std::string(knob.key);
+    std::replace(name.begin(), name.end(), '_', '-');
+    const std::string key(knob.key);
+    const CLI::Validator in_range(
+        [knob](std::string& text) -> std::string {
+          double value = 0.0;
+          try {
+            std::size_t used = 0;
+            value = std::stod(text, &used);
+            if (used != text.size()) return "expected " + knob.expectation();
+          } catch (const std::exception&) {
+            return "expected " + knob.expectation();
+          }
+          return knob.valid(value) ? std::string() : "expected " + knob.expectation();
+        },
+        knob.expectation());
+    command
+        .add_option_function<double>(
+            name, [&out, key](const double& value) { out.knobs[key] = value; },
+            std::string(knob.help) + (knob.unit.empty() ? "" : ", " + std::string(knob.unit)) +
+                " (overrides the preset)")
+        ->check(in_range)
+        ->type_name(knob.integer ? "N" : "X");
+  }
+}
+
+}  // namespace rugosim::app
