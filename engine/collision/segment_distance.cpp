@@ -155,7 +155,19 @@ Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const T
     }
     if (best.distance <= tol.zero) break;
     if (certified_bound(a, b, box, m) >= best.distance - tol.accuracy) continue;
-    if (cell.depth < settings.max_depth) push_children(cell, best.distance - tol.accuracy, heap);
+    if (cell.depth < settings.max_depth) {
+      push_children(cell, best.distance - tol.accuracy, heap);
+      continue;
+    }
+    // As deep as the search may go: the rectangle's point seeds a full descent over the whole
+    // square instead (a shallow search still finds crossings and minima that Newton can reach
+    // from there, it only certifies less).
+    const LocalMinimum deep = descend_to_local_minimum(a, b, ParameterBox{}, m.s, m.t,
+                                                       tol.zero * tol.zero,
+                                                       settings.seed_iterations);
+    const double d_deep = std::sqrt(deep.distance2);
+    if (d_deep < best.distance) best = {deep.s, deep.t, d_deep};
+    if (best.distance <= tol.zero) break;
   }
   return best;
 }

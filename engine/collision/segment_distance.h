@@ -53,7 +53,8 @@ struct NarrowPhaseSettings {
   // can close.
   int seed_iterations = 40;
   // Halvings of the parameter intervals in the search for seeds: past 2^-48 a rectangle's
-  // points agree to rounding.
+  // points agree to rounding. A rectangle at this depth is not split again: its point seeds a
+  // full descent instead.
   int max_depth = 48;
   // Rectangles examined before giving up with the best pair found.
   int max_cells = 4096;

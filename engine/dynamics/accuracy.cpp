@@ -50,7 +50,7 @@ const std::vector<AccuracyKnob>& accuracy_knobs() {
        1e-15, false, 1e-3, &Accuracy::newton_tolerance, nullptr},
       {"newton_iterations", "", "Newton steps from each seed", true, 1, false, 1000, nullptr,
        &Accuracy::newton_iterations},
-      {"seed_depth", "", "subdivision depth of the search for seeds", true, 1, false, 60, nullptr,
+      {"seed_depth", "", "subdivision depth of the search for seeds", true, 8, false, 60, nullptr,
        &Accuracy::seed_depth},
       {"contact_passes", "", "passes of collisions and micro-collisions per state", true, 1, false,
        100000, nullptr, &Accuracy::contact_passes},
@@ -84,8 +84,7 @@ std::optional<Accuracy> accuracy_preset(std::string_view name) {
     a.newton_tolerance = 1e-9;
     a.newton_iterations = 16;
     a.seed_depth = 24;
-    a.contact_passes = 16;
-    a.contact_threshold = 1e-2;
+    a.contact_passes = 32;
     return a;
   }
   if (name == "precise") {
@@ -97,7 +96,6 @@ std::optional<Accuracy> accuracy_preset(std::string_view name) {
     a.newton_iterations = 60;
     a.seed_depth = 52;
     a.contact_passes = 128;
-    a.contact_threshold = 1e-4;
     return a;
   }
   return std::nullopt;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "engine/geometry/boundary_validity.h"
+#include "engine/geometry/curve_length.h"
 #include "engine/geometry/friction.h"
 #include "engine/geometry/mass_properties.h"
 #include "engine/geometry/orientation.h"
@@ -75,6 +76,7 @@ RigidBody::RigidBody(const RigidBodyDesc& desc) : material_(desc.material), fixe
   }
   shape_ = std::make_shared<const CollisionShape>(PeriodicBSpline(std::move(centred)),
                                                   std::move(tolerances));
+  thickness_ = 2.0 * area_ / curve_length(shape_->curve());
   input_segment_of_ = std::move(ccw.old_segment_of);
   input_reversed_ = ccw.reversed;
 

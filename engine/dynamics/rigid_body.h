@@ -75,6 +75,11 @@ class RigidBody {
   // m: radius of a disc about the centre of mass that holds the whole curve (not its band):
   // the largest control point distance, since the curve lies in their convex hull.
   double bounding_radius() const { return bounding_radius_; }
+  // m: 2 × area / perimeter, the width of a strip with the body's area and outline: for a
+  // convex body at most its least width (a disk of radius r gives r, a thin plate its
+  // thickness), so that moving less than half of it a body cannot pass through another
+  // unseen (World's tunnelling bound).
+  double thickness() const { return thickness_; }
 
   // Stored segment k (counter-clockwise numbering) at t is the input's segment
   // input_segment(k) at t, or at 1 − t when the input ran clockwise (input_reversed()).
@@ -117,6 +122,7 @@ class RigidBody {
   double inverse_inertia_ = 0.0;         // 1/(kg·m²)
   Vec2 centroid_offset_ = Vec2::Zero();  // m, in the user's frame
   double bounding_radius_ = 0.0;         // m
+  double thickness_ = 0.0;               // m
   std::vector<std::size_t> input_segment_of_;
   bool input_reversed_ = false;
   BodyState state_;

@@ -12,7 +12,7 @@ struct StepStats {
   std::uint64_t collisions = 0;  // impulses from plain collisions (events of kind collision)
   std::uint64_t contacts = 0;    // resting-contact micro-collisions (events of kind contact)
   // Every time a bounded loop ran out and a documented fallback was used (the sum of the
-  // three kinds below).
+  // min-step, pass and stalled-step kinds below).
   std::uint64_t fallbacks = 0;
   std::uint64_t min_step_fallbacks = 0;  // back-off reached the minimum step without progress
   std::uint64_t pass_fallbacks = 0;      // resolution passes ran out with contacts approaching
@@ -20,8 +20,11 @@ struct StepStats {
   // Accepted states left with a contact approaching even after the rigid clusters.
   std::uint64_t unresolved_states = 0;
   std::uint64_t crossing_fallbacks = 0;  // repeated min-step fallbacks: a crossing was accepted
+  // Steps whose back-offs ran out (World::kMaxBackOffsPerStep) without reaching the step's end:
+  // the rest of the move was accepted as it was.
+  std::uint64_t stalled_steps = 0;
   // Accepted states in which two boundaries cross: 0 is the goal, and only
-  // crossing_fallbacks can make it grow.
+  // crossing_fallbacks and stalled_steps can make it grow.
   std::uint64_t crossings = 0;
   std::uint64_t passes = 0;         // contact-resolution passes over all the contacts of a state
   std::uint64_t islands_slept = 0;  // islands of resting bodies put to sleep

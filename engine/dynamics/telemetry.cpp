@@ -92,6 +92,7 @@ std::string stats_json(const StepStats& s, double wall_time, const Accuracy* acc
   counter("rigid_clusters", s.rigid_clusters);
   counter("unresolved_states", s.unresolved_states);
   counter("crossing_fallbacks", s.crossing_fallbacks);
+  counter("stalled_steps", s.stalled_steps);
   counter("crossings", s.crossings);
   counter("passes", s.passes);
   counter("islands_slept", s.islands_slept);

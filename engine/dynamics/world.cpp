@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -192,8 +193,22 @@ void World::resolve(const std::vector<ContactManifold>& manifolds, double time) 
 void World::advance_crossing_members(double h) {
   double local = 0.0;         // s after time_ reached by the members
   bool trial_crosses = true;  // the caller found the move to h crossing
+  int back_offs = 0;
   while (local < h) {
     const double dt_full = h - local;
+    if (++back_offs > kMaxBackOffsPerStep) {
+      // The sub-steps are crawling: take the rest of the move as it is, so that time moves on.
+      save_start();
+      place_at(dt_full);
+      detect();
+      accepted_ = detected_;
+      accepted_pairs_ = detected_pairs_;
+      consecutive_fallbacks_ = 0;
+      ++stats_.stalled_steps;
+      ++stats_.fallbacks;
+      resolve(accepted_, time_ + h);
+      return;
+    }
     if (!trial_crosses) {
       save_start();
       place_at(dt_full);
@@ -285,6 +300,52 @@ void World::step(double h) {
   });
 }
 
+double World::tunnel_free_step(double h) const {
+  const double g = settings_.gravity.norm();
+  // How far body i can move in a step of h: 0 when it does not move.
+  auto speed_of = [&](std::size_t i) {
+    const RigidBody& b = bodies_[i];
+    if (b.fixed() || sleep_.asleep(i)) return 0.0;
+    return b.state().velocity.norm() + std::abs(b.state().angular_velocity) * b.bounding_radius();
+  };
+  double thinnest = std::numeric_limits<double>::infinity();
+  double fastest = 0.0;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    thinnest = std::min(thinnest, bodies_[i].thickness());
+    fastest = std::max(fastest, speed_of(i));
+  }
+  // Every pair together moves at most twice the fastest body's reach.
+  if (2.0 * (fastest * h + 0.5 * g * h * h) <= 0.5 * thinnest) return h;
+  double safe = h;
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (bodies_[i].fixed() || sleep_.asleep(i)) continue;  // seen from the moving side
+    const double si = speed_of(i);
+    const Aabb box_i = bodies_[i].shape().world_bounds(bodies_[i].placement());
+    for (std::size_t j = 0; j < bodies_.size(); ++j) {
+      if (j == i) continue;
+      const bool j_moves = !bodies_[j].fixed() && !sleep_.asleep(j);
+      if (j_moves && j < i) continue;  // the pair was seen from j
+      const double sj = speed_of(j);
+      // Relative motion: speeds add, and gravity moves both alike when both move.
+      const double a = si + sj;
+      const double b = j_moves ? 0.0 : 0.5 * g;
+      const double reach = a * h + b * h * h;
+      const Aabb box_j = bodies_[j].shape().world_bounds(bodies_[j].placement());
+      Aabb grown_i = box_i;
+      grown_i.min -= Vec2::Constant(reach);
+      grown_i.max += Vec2::Constant(reach);
+      if (!grown_i.overlaps(box_j)) continue;
+      const double limit = 0.5 * std::min(bodies_[i].thickness(), bodies_[j].thickness());
+      if (reach <= limit) continue;
+      // The largest dt with a·dt + b·dt² <= limit.
+      const double dt =
+          b > 0.0 ? 2.0 * limit / (a + std::sqrt(a * a + 4.0 * b * limit)) : limit / a;
+      safe = std::min(safe, dt);
+    }
+  }
+  return std::max(safe, settings_.min_step);
+}
+
 void World::advance_to(double t) {
   moving_.resize(bodies_.size(), 0);
   start_.resize(bodies_.size());
@@ -296,7 +357,7 @@ void World::advance_to(double t) {
       break;
     }
     const double remaining = t - time_;
-    const double h = std::min(settings_.max_step, remaining);
+    const double h = tunnel_free_step(std::min(settings_.max_step, remaining));
     step(h);
     // Land exactly on t rather than a rounding short of it.
     time_ = h == remaining ? t : time_ + h;

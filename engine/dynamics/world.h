@@ -19,10 +19,21 @@
 //     the unchanged state, counted in min_step_fallbacks; after kMaxConsecutiveFallbacks such
 //     fallbacks in a row the whole remaining move is accepted although it crosses, counted in
 //     crossing_fallbacks and crossings, so that time always moves on. Each accepted sub-state
-//     gets its impulses, and the backed-off islands sub-step on until they too reach h.
+//     gets its impulses, and the backed-off islands sub-step on until they too reach h. A step
+//     is backed off at most kMaxBackOffsPerStep times: contacts that come and go at the
+//     resolution of the narrow phase (or a coarse seed_depth) could otherwise make the
+//     sub-steps crawl at min_step; then the rest of the move is accepted as it is, counted in
+//     stalled_steps.
 //  3. Contacts of an accepted state get impulses (contact_resolution.h: collisions, and
 //     micro-collisions for resting contact; material mixing, gravity rules and the rigid-
 //     cluster fallback are there). Sleeping islands touched by an awake body wake first.
+//  0. Before each step, its length is cut so that no body can tunnel: two bodies whose boxes
+//     could meet within the step (each box grown by how far the body can move in it: speed and
+//     spin times the bounding radius, and gravity) move, relative to each other, at most half
+//     the thinner one's thickness (RigidBody::thickness). The crossing check at the step's end
+//     then sees any overlap before a body can get through to the other side. It costs nothing
+//     while every body is slow: the step is cut only when some body could move more than a
+//     quarter of the thinnest body's thickness in it.
 //  4. Sleeping (sleep_tracker.h): after the step, islands that have been still long enough
 //     fall asleep. Sleeping bodies are not moved and pairs of them with fixed or sleeping
 //     bodies are not tested; when nothing movable is awake, advance_to jumps straight to its
@@ -73,6 +84,8 @@ class World {
  public:
   // After this many min-step fallbacks in a row, a crossing state is accepted (see above).
   static constexpr int kMaxConsecutiveFallbacks = 8;
+  // Back-offs of one step at most before the rest of its move is accepted (see above).
+  static constexpr int kMaxBackOffsPerStep = 32;
 
   // Throws std::invalid_argument on non-finite gravity, a negative friction gain, steps that
   // are not 0 < min_step <= max_step, non-positive loop bounds, or narrow-phase settings out
@@ -117,6 +130,9 @@ class World {
   // Runs detection on the current placement, every non-member held still; result in
   // detected_ and detected_pairs_.
   void detect();
+  // The longest step, at most h (s), in which no pair of bodies can tunnel (see above; never
+  // below min_step).
+  double tunnel_free_step(double h) const;
   // One step of exactly h (s) for every awake movable body (islands that cross back off alone).
   void step(double h);
   // Advances the members, whose full move to h (s after time_) was found to cross, by

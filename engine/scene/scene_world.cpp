@@ -7,6 +7,7 @@
 #include "engine/collision/collision_pipeline.h"
 #include "engine/core/random.h"
 #include "engine/geometry/shapes.h"
+#include "engine/scene/model_limits.h"
 
 namespace rugosim {
 namespace {
@@ -95,6 +96,8 @@ SceneWorld build_world(const Scene& scene, const std::string& file) {
       out.errors.push_back({file, body_path(i) + "/shape", e.what(), 0, 0});
     }
   }
+  if (!out.errors.empty()) return out;
+  out.errors = check_model_limits(*world, scene, file);
   if (!out.errors.empty()) return out;
 
   std::vector<PlacedShape> placed;

@@ -40,9 +40,9 @@ TEST(InfoCommand, JsonHasTheContractKeysAndTheRightMassProperties) {
   EXPECT_NEAR(block["mass"].get<double>(), 3200.0, 1e-9);
   EXPECT_NEAR(block["inertia"].get<double>(), 3200.0 * (64.0 + 0.16) / 12.0, 1e-7);
   EXPECT_NEAR(block["centroid"][1].get<double>(), -0.2, 1e-12);
-  // λ = q·σ = 0.9 · 3.33 mm = 3 mm everywhere.
-  EXPECT_NEAR(block["lambda_range"][0].get<double>(), 0.003, 1e-15);
-  EXPECT_NEAR(block["lambda_range"][1].get<double>(), 0.003, 1e-15);
+  // λ = q·σ = 0.9 · 0.333 mm = 0.3 mm everywhere.
+  EXPECT_NEAR(block["lambda_range"][0].get<double>(), 0.0003, 1e-16);
+  EXPECT_NEAR(block["lambda_range"][1].get<double>(), 0.0003, 1e-16);
   // The disk: 64 segments, r = 0.25: the area falls short of πr² by about 4.3/n⁴ of it.
   const auto& disk = info["bodies"][1];
   EXPECT_EQ(disk["segments"], 64);

@@ -94,7 +94,7 @@ TEST(Accuracy, OutOfRangeKnobsAreRefusedByName) {
   EXPECT_EQ(message(a), "accuracy: max_step must be a number in (0, 1] (s), got 0");
   a = Accuracy{};
   a.seed_depth = 61;
-  EXPECT_EQ(message(a), "accuracy: seed_depth must be an integer in [1, 60], got 61");
+  EXPECT_EQ(message(a), "accuracy: seed_depth must be an integer in [8, 60], got 61");
   a = Accuracy{};
   a.newton_tolerance = 1e-2;
   EXPECT_EQ(message(a), "accuracy: newton_tolerance must be a number in [1e-15, 0.001], got 0.01");

@@ -1,0 +1,217 @@
+// The closed forms of the validation scenes (scenes/validation_*.json), each computed from the
+// scene's own numbers (speeds, σ, λ_min, friction gain, gravity, restitution), never from a
+// run.
+#include "accuracy_metrics.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "engine/scene/scene_world.h"
+
+namespace rugosim::study {
+namespace {
+
+std::size_t first_fixed(const World& world) {
+  for (std::size_t i = 0; i < world.body_count(); ++i) {
+    if (world.body(i).fixed()) return i;
+  }
+  throw std::invalid_argument("the scene has no fixed body");
+}
+
+// μ of a homogeneous surface, μ = k·max(0, λ − λ_min) (paper §4.2).
+double surface_mu(const World& world, std::size_t body, std::size_t segment = 0) {
+  const RigidBody& b = world.body(body);
+  const double lambda = b.shape().tolerances().segment_tolerance(segment);
+  return world.settings().friction_gain * std::max(0.0, lambda - b.material().lambda_min);
+}
+
+double frame_time(const Run& run, std::size_t k) {
+  return static_cast<double>(k) / run.fps;
+}
+
+// Slides at v0 − μg·t until t* = v0 / (3μg), then rolls at 2v0/3 (I = ½mr²): the largest
+// difference of vx from v0 − μg·t over the frames before 0.9 t*, relative to v0, and the final
+// speed's difference from 2v0/3, relative to it.
+ClosedFormError sliding_disk(const Run& run) {
+  const World& world = *run.world;
+  const double mu = surface_mu(world, first_fixed(world));
+  const double g = world.settings().gravity.norm();
+  const double v0 = run.frames.front()[0].velocity.x();
+  const double t_star = v0 / (3.0 * mu * g);
+  double slide = 0.0;
+  for (std::size_t k = 0; k < run.frames.size() && frame_time(run, k) < 0.9 * t_star; ++k) {
+    const double exact = v0 - mu * g * frame_time(run, k);
+    slide = std::max(slide, std::abs(run.frames[k][0].velocity.x() - exact) / v0);
+  }
+  const double rolling = 2.0 * v0 / 3.0;
+  const double roll = std::abs(run.frames.back()[0].velocity.x() - rolling) / rolling;
+  return {std::max(slide, roll),
+          "max(|vx − (v0 − μg·t)| / v0 while sliding, |final vx − 2v0/3| / (2v0/3))",
+          {{"sliding speed", slide}, {"rolling speed", roll}}};
+}
+
+// Slides down the slope (+x, gravity tilted) at a = g_x − μ·(−g_y): the fitted slope of vx over
+// t >= 0.2 s (after the release hop), relative to a.
+ClosedFormError incline_above(const Run& run) {
+  const World& world = *run.world;
+  const double mu = surface_mu(world, first_fixed(world));
+  const Vec2 g = world.settings().gravity;
+  const double a = g.x() + mu * g.y();
+  double n = 0, st = 0, sv = 0, stt = 0, stv = 0;
+  for (std::size_t k = 0; k < run.frames.size(); ++k) {
+    const double t = frame_time(run, k);
+    if (t < 0.2) continue;
+    const double v = run.frames[k][0].velocity.x();
+    n += 1;
+    st += t;
+    sv += v;
+    stt += t * t;
+    stv += t * v;
+  }
+  const double fitted = (n * stv - st * sv) / (n * stt - st * st);
+  const double e = std::abs(fitted - a) / a;
+  return {e, "|fitted dvx/dt − g(sin θ − μ cos θ)| / that", {{"acceleration", e}}};
+}
+
+// Below the friction angle the block stays: how far it moved after the release hop (t >= 0.2
+// s), as a share of the distance it would slide without friction over that time.
+ClosedFormError incline_below(const Run& run) {
+  const World& world = *run.world;
+  const Vec2 g = world.settings().gravity;
+  std::size_t from = 0;
+  while (from + 1 < run.frames.size() && frame_time(run, from) < 0.2)
+    ++from;
+  const double t = frame_time(run, run.frames.size() - 1) - frame_time(run, from);
+  const double moved = (run.frames.back()[0].position - run.frames[from][0].position).norm();
+  const double e = moved / (0.5 * std::abs(g.x()) * t * t);
+  return {e, "distance moved after 0.2 s / frictionless slide distance", {{"creep", e}}};
+}
+
+// Each apex is ε² of the one before. The apex height of a frame in flight is exact from its
+// energy, y − r − top + vy²/(2g); a flight's value is the median over its frames, and the error
+// the largest of |h_k / h_{k−1} − ε²| / ε² over the first three bounces.
+ClosedFormError bouncing_disk(const Run& run, const Scene& scene) {
+  const World& world = *run.world;
+  const std::size_t floor_index = first_fixed(world);
+  const BodySpec& floor = scene.bodies[floor_index];
+  const double top = floor.position.y() + 0.5 * floor.shape.size.y();
+  const BodySpec& disk = scene.bodies[run.movers[0]];
+  const double r = disk.shape.radius;
+  const double epsilon = std::max(floor.material.restitution, disk.material.restitution);
+  const double g = world.settings().gravity.norm();
+  std::vector<std::vector<double>> flights(1);
+  for (std::size_t k = 0; k < run.frames.size(); ++k) {
+    const BodyState& s = run.frames[k][0];
+    if (k > 0 && run.frames[k - 1][0].velocity.y() <= 0.0 && s.velocity.y() > 0.0) {
+      flights.emplace_back();  // bounced since the last frame
+    }
+    const double height = s.position.y() - r - top;
+    if (height > 1e-4 * r) {
+      flights.back().push_back(height + s.velocity.y() * s.velocity.y() / (2.0 * g));
+    }
+  }
+  std::vector<double> apex;
+  for (std::vector<double>& f : flights) {
+    if (f.empty()) break;
+    std::sort(f.begin(), f.end());
+    apex.push_back(f[f.size() / 2]);
+  }
+  double worst = 0.0;
+  const double expected = epsilon * epsilon;
+  for (std::size_t k = 1; k <= 3; ++k) {
+    // A bounce that did not happen has the ratio 0: an error of 1.
+    const double ratio = k < apex.size() ? apex[k] / apex[k - 1] : 0.0;
+    worst = std::max(worst, std::abs(ratio - expected) / expected);
+  }
+  return {worst, "max over 3 bounces |h_k / h_{k−1} − ε²| / ε²", {{"bounce ratio", worst}}};
+}
+
+// A block at v0 reaches a patch of friction μ and, with its weight spread evenly over its base,
+// its centre stops d = v0² / (2gμ) past the patch's start (the start taken from the floor's σ:
+// the leftmost point of a rough segment). The model is approximate: a decelerating block
+// leans on its front corner.
+ClosedFormError rough_patch(const Run& run) {
+  const World& world = *run.world;
+  const std::size_t floor = first_fixed(world);
+  const RigidBody& body = world.body(floor);
+  double start = std::numeric_limits<double>::infinity();
+  double mu = 0.0;
+  for (std::size_t j = 0; j < body.curve().size(); ++j) {
+    if (body.shape().tolerances().segment_tolerance(j) <= 0.0) continue;
+    mu = std::max(mu, surface_mu(world, floor, j));
+    for (int i = 0; i <= 8; ++i) {
+      start = std::min(start, body.world_point(body.curve().segment(j).point(i / 8.0)).x());
+    }
+  }
+  const double v0 = run.frames.front()[0].velocity.x();
+  const double d = v0 * v0 / (2.0 * world.settings().gravity.norm() * mu);
+  const double stop = run.frames.back()[0].position.x();
+  const double e = std::abs(stop - (start + d)) / d;
+  return {e, "|centre's stop − (patch start + v0²/2gμ)| / d", {{"stopping distance", e}}};
+}
+
+}  // namespace
+
+Run run_scene(const Scene& scene, const std::string& file, const Accuracy& accuracy, int repeats) {
+  Scene tuned = scene;
+  tuned.accuracy = AccuracySpec{"normal", {}};
+  for (const AccuracyKnob& knob : accuracy_knobs())
+    tuned.accuracy.knobs[std::string(knob.key)] = knob.get(accuracy);
+  Run best;
+  for (int r = 0; r < std::max(repeats, 1); ++r) {
+    SceneWorld built = build_world(tuned, file);
+    if (!built.world) throw std::runtime_error(file + ": the scene does not build");
+    std::shared_ptr<World> world = std::move(built.world);
+    Run run;
+    run.fps = scene.render.fps;
+    for (std::size_t i = 0; i < world->body_count(); ++i) {
+      if (!world->body(i).fixed()) run.movers.push_back(i);
+    }
+    const auto last = static_cast<std::size_t>(std::floor(scene.duration * run.fps + 1e-9));
+    const auto begin = std::chrono::steady_clock::now();
+    for (std::size_t k = 0; k <= last; ++k) {
+      if (k > 0) world->advance_to(static_cast<double>(k) / run.fps);
+      world->clear_events();
+      std::vector<BodyState> states;
+      for (const std::size_t i : run.movers)
+        states.push_back(world->body(i).state());
+      run.frames.push_back(std::move(states));
+    }
+    run.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+    run.stats = world->stats();
+    run.world = world;
+    if (r == 0 || run.wall_s < best.wall_s) best = std::move(run);
+  }
+  return best;
+}
+
+std::optional<ClosedFormError> closed_form_error(const std::string& name, const Scene& scene,
+                                                 const Run& run) {
+  if (name == "validation_sliding_disk") return sliding_disk(run);
+  if (name == "validation_incline_above") return incline_above(run);
+  if (name == "validation_incline_below") return incline_below(run);
+  if (name == "validation_bouncing_disk") return bouncing_disk(run, scene);
+  if (name == "validation_rough_patch") return rough_patch(run);
+  return std::nullopt;
+}
+
+double trajectory_error(const Run& run, const Run& reference) {
+  const std::size_t frames = std::min(run.frames.size(), reference.frames.size());
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (std::size_t k = 0; k < frames; ++k) {
+    for (std::size_t m = 0; m < run.movers.size(); ++m) {
+      const double radius = run.world->body(run.movers[m]).bounding_radius();
+      const double d =
+          (run.frames[k][m].position - reference.frames[k][m].position).norm() / radius;
+      sum += d * d;
+      ++count;
+    }
+  }
+  return count > 0 ? std::sqrt(sum / static_cast<double>(count)) : 0.0;
+}
+
+}  // namespace rugosim::study

@@ -1,0 +1,377 @@
+// The accuracy study (issue 8; README, "Accuracy"): every built-in scene at every accuracy
+// preset and along each knob, measured against what it should give:
+//   - the validation scenes against their closed forms (accuracy_metrics.cpp),
+//   - the figure scenes against a reference run of the same scene at the tightest settings
+//     (RMS distance of the bodies from the reference's, in body radii),
+// with the wall time of the simulation alone (best of --repeats runs). It writes, into the
+// folder given (default docs/accuracy):
+//   accuracy.csv  one row per setting and scene,
+//   accuracy.md   the tables: settings with their total time and errors (the Pareto front
+//                 marked), the presets scene by scene, and draft's speed-up over precise,
+//   pareto.png    error against wall time, one point per setting, the Pareto front drawn
+//                 (gnuplot).
+// Usage: accuracy_study [OUT_DIR] [--repeats N]. Run from anywhere: the scenes come from the
+// source tree this was built from.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "accuracy_metrics.h"
+#include "engine/scene/scene_loader.h"
+#include "render/app/gnuplot.h"
+
+namespace rugosim::study {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Setting {
+  std::string label;  // "draft", "max_step=0.004", ...
+  std::string knob;   // "preset" or the knob's key
+  double value = 0.0;
+  Accuracy accuracy;
+};
+
+std::vector<Setting> settings() {
+  std::vector<Setting> out;
+  for (const std::string& name : accuracy_preset_names()) {
+    out.push_back({name, "preset", 0.0, *accuracy_preset(name)});
+  }
+  const std::map<std::string, std::vector<double>> sweeps = {
+      {"max_step", {8e-3, 4e-3, 2e-3, 5e-4, 2.5e-4, 1.25e-4}},
+      {"toi_tolerance", {1e-5, 1e-7, 1e-11}},
+      {"max_bisections", {8, 20}},
+      {"newton_tolerance", {1e-6, 1e-9, 1e-14}},
+      {"newton_iterations", {4, 12, 100}},
+      {"seed_depth", {8, 12, 60}},
+      {"contact_passes", {4, 16, 256}},
+      {"contact_threshold", {5e-2, 1e-2, 1e-4, 0.0}},
+  };
+  for (const AccuracyKnob& knob : accuracy_knobs()) {
+    for (const double value : sweeps.at(std::string(knob.key))) {
+      Accuracy a;
+      knob.set(a, value);
+      out.push_back({fmt::format("{}={:g}", knob.key, value), std::string(knob.key), value, a});
+    }
+  }
+  return out;
+}
+
+// The tightest settings of the study: the figure scenes' reference.
+Accuracy reference_accuracy() {
+  Accuracy a;
+  a.max_step = 6.25e-5;
+  a.toi_tolerance = 1e-11;
+  a.max_bisections = 200;
+  a.newton_tolerance = 1e-14;
+  a.newton_iterations = 100;
+  a.seed_depth = 60;
+  a.contact_passes = 1024;
+  a.contact_threshold = 1e-5;
+  return a;
+}
+
+struct SceneFile {
+  std::string name;
+  std::string path;
+  Scene scene;
+  bool validation = false;
+  Run reference;  // figure scenes only
+};
+
+struct Row {
+  std::string scene;
+  bool validation = false;
+  double wall_s = 0.0;
+  double error = 0.0;
+  std::string measure;
+  std::vector<std::pair<std::string, double>> parts;  // validation scenes: what was compared
+  StepStats stats;
+};
+
+struct Summary {
+  const Setting* setting = nullptr;
+  std::vector<Row> rows;
+  double wall_s = 0.0;            // all scenes
+  double validation_error = 0.0;  // geometric mean over the validation scenes
+  double figure_error = 0.0;      // geometric mean over the figure scenes
+  double worst_validation = 0.0;
+  std::uint64_t crossings = 0;
+  std::uint64_t fallbacks = 0;
+  bool front_validation = false;  // on the Pareto front of (wall, validation error)
+  bool front_figure = false;
+};
+
+double geometric_mean(const std::vector<double>& values) {
+  double log_sum = 0.0;
+  for (const double v : values)
+    log_sum += std::log(std::max(v, 1e-12));
+  return values.empty() ? 0.0 : std::exp(log_sum / static_cast<double>(values.size()));
+}
+
+// Marks the summaries no other one beats on both time and error.
+template <typename Error, typename Mark>
+void mark_front(std::vector<Summary>& all, Error error, Mark mark) {
+  for (Summary& s : all) {
+    const bool dominated = std::any_of(all.begin(), all.end(), [&](const Summary& o) {
+      return &o != &s && o.wall_s <= s.wall_s && error(o) <= error(s) &&
+             (o.wall_s < s.wall_s || error(o) < error(s));
+    });
+    mark(s) = !dominated;
+  }
+}
+
+void write_csv(const fs::path& path, const std::vector<Summary>& all) {
+  std::ofstream out(path);
+  out << "setting,knob,value,scene,kind,wall_s,error,measure,steps,bisections,fallbacks,"
+         "crossings\n";
+  for (const Summary& s : all) {
+    for (const Row& r : s.rows) {
+      out << fmt::format("{},{},{:g},{},{},{:.6g},{:.6g},\"{}\",{},{},{},{}\n", s.setting->label,
+                         s.setting->knob, s.setting->value, r.scene,
+                         r.validation ? "closed form" : "reference", r.wall_s, r.error, r.measure,
+                         r.stats.steps, r.stats.bisections, r.stats.fallbacks, r.stats.crossings);
+    }
+  }
+}
+
+const Summary& by_label(const std::vector<Summary>& all, const std::string& label) {
+  return *std::find_if(all.begin(), all.end(),
+                       [&](const Summary& s) { return s.setting->label == label; });
+}
+
+void write_markdown(const fs::path& path, const std::vector<Summary>& all,
+                    const std::vector<SceneFile>& scenes, int repeats) {
+  std::ofstream out(path);
+  out << "# Accuracy study\n\n"
+         "Written by `build/release/bench/accuracy_study docs/accuracy` "
+         "(bench/accuracy_study.cpp); wall times are the simulation alone, the best of "
+      << repeats
+      << " runs, on the machine that ran it. Validation error: the geometric mean over the "
+         "validation scenes of each one's relative error against its closed form (below). "
+         "Figure error: the geometric mean over the figure scenes of the RMS distance of the "
+         "bodies from a reference run at the tightest settings (max_step 62.5 µs and the "
+         "finest of every other knob), in body radii; figure12a and figure12b are chaotic "
+         "piles, so any change of settings soon gives another pile and their error saturates "
+         "near 1. ★ marks the Pareto front (no other setting is both faster and more "
+         "accurate).\n\n";
+  out << "## Every setting\n\n"
+         "| setting | wall s (all scenes) | validation error | worst validation | figure error "
+         "| crossings | fallbacks |\n|---|---|---|---|---|---|---|\n";
+  std::vector<const Summary*> sorted;
+  for (const Summary& s : all)
+    sorted.push_back(&s);
+  std::sort(sorted.begin(), sorted.end(),
+            [](const Summary* a, const Summary* b) { return a->wall_s < b->wall_s; });
+  for (const Summary* s : sorted) {
+    const bool preset = s->setting->knob == "preset";
+    out << fmt::format("| {}{}{} | {:.3f} | {:.3g}{} | {:.3g} | {:.3g}{} | {} | {} |\n",
+                       preset ? "**" : "", s->setting->label, preset ? "**" : "", s->wall_s,
+                       s->validation_error, s->front_validation ? " ★" : "", s->worst_validation,
+                       s->figure_error, s->front_figure ? " ★" : "", s->crossings, s->fallbacks);
+  }
+  const std::vector<std::string> presets = accuracy_preset_names();
+  out << "\n## The presets, scene by scene\n\n| scene | measure |";
+  for (const std::string& p : presets)
+    out << " " << p << " error |";
+  for (const std::string& p : presets)
+    out << " " << p << " ms |";
+  out << "\n|---|---|";
+  for (std::size_t i = 0; i < 2 * presets.size(); ++i)
+    out << "---|";
+  out << "\n";
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    const Row& first = by_label(all, presets.front()).rows[k];
+    out << "| " << scenes[k].name << " | " << first.measure << " |";
+    for (const std::string& p : presets)
+      out << fmt::format(" {:.3g} |", by_label(all, p).rows[k].error);
+    for (const std::string& p : presets)
+      out << fmt::format(" {:.3g} |", 1e3 * by_label(all, p).rows[k].wall_s);
+    out << "\n";
+  }
+  out << "\n## The closed forms at each preset\n\n| scene | quantity |";
+  for (const std::string& p : presets)
+    out << " " << p << " |";
+  out << "\n|---|---|";
+  for (std::size_t i = 0; i < presets.size(); ++i)
+    out << "---|";
+  out << "\n";
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    if (!scenes[k].validation) continue;
+    const std::vector<std::pair<std::string, double>>& parts =
+        by_label(all, presets.front()).rows[k].parts;
+    for (std::size_t q = 0; q < parts.size(); ++q) {
+      out << "| " << scenes[k].name << " | " << parts[q].first << " |";
+      for (const std::string& p : presets)
+        out << fmt::format(" {:.2e} |", by_label(all, p).rows[k].parts[q].second);
+      out << "\n";
+    }
+  }
+  out << "\n## Draft against precise on figure12a\n\n";
+  for (std::size_t k = 0; k < scenes.size(); ++k) {
+    if (scenes[k].name != "figure12a") continue;
+    const double draft = by_label(all, "draft").rows[k].wall_s;
+    const double precise = by_label(all, "precise").rows[k].wall_s;
+    out << fmt::format(
+        "draft {:.1f} ms, normal {:.1f} ms, precise {:.1f} ms: draft is {:.1f}× faster than "
+        "precise.\n",
+        1e3 * draft, 1e3 * by_label(all, "normal").rows[k].wall_s, 1e3 * precise, precise / draft);
+  }
+  out << "\n## Knobs\n\n";
+  for (const AccuracyKnob& knob : accuracy_knobs()) {
+    out << fmt::format("- `{}`: {} ({}; normal {:g}, draft {:g}, precise {:g})\n", knob.key,
+                       knob.help, knob.expectation(), knob.get(*accuracy_preset("normal")),
+                       knob.get(*accuracy_preset("draft")), knob.get(*accuracy_preset("precise")));
+  }
+}
+
+// Two panels, validation error and figure error against the total wall time, log-log; the
+// presets labelled, the Pareto front as a line.
+void write_plot(const fs::path& path, const std::vector<Summary>& all) {
+  auto block = [&](const std::string& name, auto error, auto front) {
+    std::string data = "$" + name + " << EOD\n";
+    std::vector<const Summary*> points;
+    for (const Summary& s : all) {
+      if (!front || (s.*front)) points.push_back(&s);
+    }
+    std::sort(points.begin(), points.end(),
+              [](const Summary* a, const Summary* b) { return a->wall_s < b->wall_s; });
+    for (const Summary* s : points) {
+      data += fmt::format("{:.6g} {:.6g} \"{}\" {}\n", s->wall_s, std::max(error(*s), 1e-12),
+                          s->setting->label, s->setting->knob == "preset" ? 1 : 0);
+    }
+    return data + "EOD\n";
+  };
+  auto validation = [](const Summary& s) { return s.validation_error; };
+  auto figure = [](const Summary& s) { return s.figure_error; };
+  std::string script = "set terminal pngcairo size 1400,560 font 'Sans,10'\n";
+  script += block("val", validation, static_cast<bool Summary::*>(nullptr));
+  script += block("valfront", validation, &Summary::front_validation);
+  script += block("fig", figure, static_cast<bool Summary::*>(nullptr));
+  script += block("figfront", figure, &Summary::front_figure);
+  script += R"(set multiplot layout 1,2
+set logscale xy
+set grid
+set key top right
+set xlabel 'wall time of all 13 scenes (s)'
+set style line 1 lc rgb '#4a6fa5' pt 7 ps 1.0
+set style line 2 lc rgb '#c0392b' lw 2
+set style line 3 lc rgb '#222222' pt 5 ps 1.6
+set title 'validation scenes: error against the closed forms'
+set ylabel 'relative error (geometric mean)'
+plot $val using 1:2 with points ls 1 title 'a setting', \
+     $valfront using 1:2 with steps ls 2 title 'Pareto front', \
+     $val using ($4 == 1 ? $1 : 1/0):2 with points ls 3 title 'presets', \
+     $val using ($4 == 1 ? $1 : 1/0):2:3 with labels offset 0,1.2 notitle
+set title 'figure scenes: distance from the reference run'
+set ylabel 'RMS distance in body radii (geometric mean)'
+plot $fig using 1:2 with points ls 1 title 'a setting', \
+     $figfront using 1:2 with steps ls 2 title 'Pareto front', \
+     $fig using ($4 == 1 ? $1 : 1/0):2 with points ls 3 title 'presets', \
+     $fig using ($4 == 1 ? $1 : 1/0):2:3 with labels offset 0,1.2 notitle
+unset multiplot
+)";
+  app::run_gnuplot(script, path.string());
+}
+
+int run(int argc, char** argv) {
+  fs::path out_dir = fs::path(RUGOSIM_SOURCE_DIR) / "docs" / "accuracy";
+  int repeats = 3;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--repeats" && i + 1 < argc) {
+      repeats = std::max(1, std::atoi(argv[++i]));
+    } else {
+      out_dir = arg;
+    }
+  }
+  fs::create_directories(out_dir);
+
+  std::vector<SceneFile> scenes;
+  for (const auto& entry : fs::directory_iterator(fs::path(RUGOSIM_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    SceneFile f;
+    f.name = entry.path().stem().string();
+    f.path = entry.path().string();
+    const SceneLoad load = load_scene_file(f.path);
+    if (!load.ok()) throw std::runtime_error(f.path + " does not load");
+    f.scene = load.scene;
+    f.validation = f.name.rfind("validation_", 0) == 0;
+    scenes.push_back(std::move(f));
+  }
+  std::sort(scenes.begin(), scenes.end(),
+            [](const SceneFile& a, const SceneFile& b) { return a.name < b.name; });
+  for (SceneFile& f : scenes) {
+    if (f.validation) continue;
+    fmt::print(stderr, "reference run of {}\n", f.name);
+    f.reference = run_scene(f.scene, f.path, reference_accuracy(), 1);
+  }
+
+  const std::vector<Setting> all_settings = settings();
+  std::vector<Summary> summaries;
+  for (const Setting& setting : all_settings) {
+    Summary s;
+    s.setting = &setting;
+    std::vector<double> validation, figure;
+    for (const SceneFile& f : scenes) {
+      const Run run = run_scene(f.scene, f.path, setting.accuracy, repeats);
+      Row row;
+      row.scene = f.name;
+      row.validation = f.validation;
+      row.wall_s = run.wall_s;
+      row.stats = run.stats;
+      if (f.validation) {
+        const ClosedFormError e = *closed_form_error(f.name, f.scene, run);
+        row.error = e.error;
+        row.measure = e.what;
+        row.parts = e.parts;
+        validation.push_back(e.error);
+        s.worst_validation = std::max(s.worst_validation, e.error);
+      } else {
+        row.error = trajectory_error(run, f.reference);
+        row.measure = "RMS distance from the reference, in body radii";
+        figure.push_back(row.error);
+      }
+      s.wall_s += run.wall_s;
+      s.crossings += run.stats.crossings;
+      s.fallbacks += run.stats.fallbacks;
+      s.rows.push_back(std::move(row));
+    }
+    s.validation_error = geometric_mean(validation);
+    s.figure_error = geometric_mean(figure);
+    fmt::print(stderr, "{:24} {:8.3f} s  validation {:.3g}  figures {:.3g}\n", setting.label,
+               s.wall_s, s.validation_error, s.figure_error);
+    summaries.push_back(std::move(s));
+  }
+  mark_front(
+      summaries, [](const Summary& s) { return s.validation_error; },
+      [](Summary& s) -> bool& { return s.front_validation; });
+  mark_front(
+      summaries, [](const Summary& s) { return s.figure_error; },
+      [](Summary& s) -> bool& { return s.front_figure; });
+
+  write_csv(out_dir / "accuracy.csv", summaries);
+  write_markdown(out_dir / "accuracy.md", summaries, scenes, repeats);
+  write_plot(out_dir / "pareto.png", summaries);
+  fmt::print(stderr, "wrote {}/accuracy.csv, accuracy.md and pareto.png\n", out_dir.string());
+  return 0;
+}
+
+}  // namespace
+}  // namespace rugosim::study
+
+int main(int argc, char** argv) {
+  try {
+    return rugosim::study::run(argc, argv);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "accuracy_study: {}\n", e.what());
+    return 1;
+  }
+}
