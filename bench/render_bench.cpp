@@ -229,9 +229,8 @@ void rugosim_render(benchmark::State& state, bool png) {
   const std::string out =
       png ? kWork.string() + "/rugosim_%04d.png" : kWork.string() + "/rugosim.mp4";
   std::filesystem::create_directories(kWork);
-  const std::string command =
-      fmt::format("{} render {} -o {} -y --size {}x{} 2> /dev/null", RUGOSIM_PROGRAM, kScene, out,
-                  width_for(height), height);
+  const std::string command = fmt::format("{} render {} -o {} -y --size {}x{} 2> /dev/null",
+                                          RUGOSIM_PROGRAM, kScene, out, width_for(height), height);
   for (auto _ : state)
     run_command(state, command);
   report_fps(state, clip().frames.size());
