@@ -16,6 +16,9 @@
 //                         built on the CPU every frame (and every frame drawn whole).
 //   static/<variant>      the same frames. Baseline: incremental redraw (a still floor and
 //                         walls are not drawn again). "full_redraw": every frame drawn whole.
+//   presets/<variant>     simulating figure12a (5 s) at each accuracy preset, against
+//                         precise as the baseline (issue 8's target: draft at most 0.1 of it).
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -105,6 +108,26 @@ void sleep(benchmark::State& state, bool sleeping) {
   }
 }
 
+// ---- accuracy presets ----------------------------------------------------------------------
+
+void preset(benchmark::State& state, const std::string& name) {
+  const std::string path = std::string(RUGOSIM_SOURCE_DIR) + "/scenes/figure12a.json";
+  Scene scene = load_scene_file(path).scene;
+  scene.accuracy = AccuracySpec{name, {}};
+  for (auto _ : state) {
+    state.PauseTiming();
+    std::unique_ptr<World> world = std::move(build_world(scene, path).world);
+    state.ResumeTiming();
+    // Frame by frame, as simulate and render step it (each frame time ends a step).
+    const auto frames = static_cast<int>(std::floor(scene.duration * scene.render.fps + 1e-9));
+    for (int k = 1; k <= frames; ++k) {
+      world->advance_to(k / scene.render.fps);
+      world->clear_events();
+    }
+    benchmark::DoNotOptimize(world->body(3).state());
+  }
+}
+
 // ---- drawing -------------------------------------------------------------------------------
 
 constexpr std::size_t kFrames = 90;
@@ -162,6 +185,10 @@ void register_all() {
       ->Unit(benchmark::kMillisecond);
   RegisterBenchmark("static/baseline", draw, Overlays{}, true)->Unit(benchmark::kMillisecond);
   RegisterBenchmark("static/full_redraw", draw, Overlays{}, false)->Unit(benchmark::kMillisecond);
+  RegisterBenchmark("presets/baseline", preset, std::string("precise"))
+      ->Unit(benchmark::kMillisecond);
+  RegisterBenchmark("presets/normal", preset, std::string("normal"))->Unit(benchmark::kMillisecond);
+  RegisterBenchmark("presets/draft", preset, std::string("draft"))->Unit(benchmark::kMillisecond);
 }
 
 }  // namespace
