@@ -55,7 +55,8 @@ ClosedFormError sliding_disk(const Run& run) {
     slide = std::max(slide, std::abs(run.frames[k][0].position.x() - exact) / slid);
   }
   const std::size_t last = run.frames.size() - 1;
-  const auto back = static_cast<std::size_t>(std::lround(0.25 * run.fps));
+  const auto back = std::min(
+      last, std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(0.25 * run.fps))));
   const double speed =
       (run.frames[last][0].position.x() - run.frames[last - back][0].position.x()) /
       (frame_time(run, last) - frame_time(run, last - back));
@@ -167,6 +168,7 @@ ClosedFormError rough_patch(const Run& run) {
       start = std::min(start, body.world_point(body.curve().segment(j).point(i / 8.0)).x());
     }
   }
+  if (!(mu > 0.0)) throw std::invalid_argument("the rough patch has no friction");
   const double v0 = run.frames.front()[0].velocity.x();
   const double d = v0 * v0 / (2.0 * world.settings().gravity.norm() * mu);
   const double stop = run.frames.back()[0].position.x();

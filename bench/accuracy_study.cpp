@@ -18,6 +18,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -327,8 +329,14 @@ int run(int argc, char** argv) {
       row.validation = f.validation;
       row.wall_s = run.wall_s;
       row.stats = run.stats;
+      const std::optional<ClosedFormError> closed = closed_form_error(f.name, f.scene, run);
+      if (f.validation && !closed) {
+        throw std::runtime_error(f.name +
+                                 " is a validation scene without a closed form in "
+                                 "bench/accuracy_metrics.cpp");
+      }
       if (f.validation) {
-        const ClosedFormError e = *closed_form_error(f.name, f.scene, run);
+        const ClosedFormError& e = *closed;
         row.error = e.error;
         row.measure = e.what;
         row.parts = e.parts;

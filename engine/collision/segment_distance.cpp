@@ -18,6 +18,9 @@ namespace {
 // Inside a rectangle of the search the seed is already close, and the rectangle is split if
 // the descent does not settle (at most the seed's iterations).
 constexpr int kCellIterations = 6;
+// Full descents from rectangles at the deepest level, at most, per search (a shallow
+// seed_depth would otherwise pay one for every leftover rectangle).
+constexpr int kMaxDeepDescents = 16;
 
 struct Tolerances {
   double accuracy = 0.0;  // m
@@ -117,6 +120,7 @@ void push_children(const Cell& cell, double cutoff, std::vector<Cell>& heap) {
 Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const Tolerances& tol,
                            const NarrowPhaseSettings& settings, Candidate best) {
   const int cell_iterations = std::min(kCellIterations, settings.seed_iterations);
+  int deep_descents = 0;
   std::vector<Cell> heap;
   heap.reserve(64);
   Cell root;
@@ -162,9 +166,9 @@ Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const T
     // As deep as the search may go: the rectangle's point seeds a full descent over the whole
     // square instead (a shallow search still finds crossings and minima that Newton can reach
     // from there, it only certifies less).
-    const LocalMinimum deep = descend_to_local_minimum(a, b, ParameterBox{}, m.s, m.t,
-                                                       tol.zero * tol.zero,
-                                                       settings.seed_iterations);
+    if (++deep_descents > kMaxDeepDescents) continue;
+    const LocalMinimum deep = descend_to_local_minimum(
+        a, b, ParameterBox{}, m.s, m.t, tol.zero * tol.zero, settings.seed_iterations);
     const double d_deep = std::sqrt(deep.distance2);
     if (d_deep < best.distance) best = {deep.s, deep.t, d_deep};
     if (best.distance <= tol.zero) break;

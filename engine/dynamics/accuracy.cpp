@@ -4,17 +4,9 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "engine/core/number_text.h"
+
 namespace rugosim {
-namespace {
-
-// A number as %g writes it (6 significant digits): 0.001, 1e-09, 200.
-std::string shown(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
-
-}  // namespace
 
 void AccuracyKnob::set(Accuracy& a, double value) const {
   if (integer) {
@@ -106,12 +98,12 @@ WorldSettings with_accuracy(WorldSettings base, const Accuracy& accuracy) {
     const double value = knob.get(accuracy);
     if (!knob.valid(value)) {
       throw std::invalid_argument("accuracy: " + std::string(knob.key) + " must be " +
-                                  knob.expectation() + ", got " + shown(value));
+                                  knob.expectation() + ", got " + number_text(value));
     }
   }
   if (accuracy.toi_tolerance > accuracy.max_step) {
-    throw std::invalid_argument("accuracy: toi_tolerance (" + shown(accuracy.toi_tolerance) +
-                                " s) must not exceed max_step (" + shown(accuracy.max_step) +
+    throw std::invalid_argument("accuracy: toi_tolerance (" + number_text(accuracy.toi_tolerance) +
+                                " s) must not exceed max_step (" + number_text(accuracy.max_step) +
                                 " s)");
   }
   base.max_step = accuracy.max_step;

@@ -10,6 +10,7 @@
 // point −c, in the world at x_com + R(θ)·(−c).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -78,8 +79,14 @@ class RigidBody {
   // m: 2 × area / perimeter, the width of a strip with the body's area and outline: for a
   // convex body at most its least width (a disk of radius r gives r, a thin plate its
   // thickness), so that moving less than half of it a body cannot pass through another
-  // unseen (World's tunnelling bound).
+  // unseen (World's tunnelling bound). For a concave body it is an average: a thin arm of a
+  // thick body is thinner than this, and something small and fast could still pass through
+  // the arm alone.
   double thickness() const { return thickness_; }
+  // m/s: |v| + |ω| × bounding radius, the fastest any point of the boundary moves.
+  double boundary_speed() const {
+    return state_.velocity.norm() + std::abs(state_.angular_velocity) * bounding_radius_;
+  }
 
   // Stored segment k (counter-clockwise numbering) at t is the input's segment
   // input_segment(k) at t, or at 1 − t when the input ran clockwise (input_reversed()).

@@ -302,48 +302,44 @@ void World::step(double h) {
 
 double World::tunnel_free_step(double h) const {
   const double g = settings_.gravity.norm();
-  // How far body i can move in a step of h: 0 when it does not move.
-  auto speed_of = [&](std::size_t i) {
-    const RigidBody& b = bodies_[i];
-    if (b.fixed() || sleep_.asleep(i)) return 0.0;
-    return b.state().velocity.norm() + std::abs(b.state().angular_velocity) * b.bounding_radius();
-  };
+  auto moves = [&](std::size_t i) { return !bodies_[i].fixed() && !sleep_.asleep(i); };
   double thinnest = std::numeric_limits<double>::infinity();
   double fastest = 0.0;
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     thinnest = std::min(thinnest, bodies_[i].thickness());
-    fastest = std::max(fastest, speed_of(i));
+    if (moves(i)) fastest = std::max(fastest, bodies_[i].boundary_speed());
   }
   // Every pair together moves at most twice the fastest body's reach.
   if (2.0 * (fastest * h + 0.5 * g * h * h) <= 0.5 * thinnest) return h;
+  std::vector<Aabb> boxes;
+  boxes.reserve(bodies_.size());
+  for (const RigidBody& b : bodies_)
+    boxes.push_back(b.shape().world_bounds(b.placement()));
   double safe = h;
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (bodies_[i].fixed() || sleep_.asleep(i)) continue;  // seen from the moving side
-    const double si = speed_of(i);
-    const Aabb box_i = bodies_[i].shape().world_bounds(bodies_[i].placement());
+    if (!moves(i)) continue;  // a pair is seen from a body that moves
+    const double si = bodies_[i].boundary_speed();
     for (std::size_t j = 0; j < bodies_.size(); ++j) {
-      if (j == i) continue;
-      const bool j_moves = !bodies_[j].fixed() && !sleep_.asleep(j);
-      if (j_moves && j < i) continue;  // the pair was seen from j
-      const double sj = speed_of(j);
+      if (j == i || (moves(j) && j < i)) continue;  // a pair of movers is seen once
+      const bool j_moves = moves(j);
       // Relative motion: speeds add, and gravity moves both alike when both move.
-      const double a = si + sj;
+      const double a = si + (j_moves ? bodies_[j].boundary_speed() : 0.0);
       const double b = j_moves ? 0.0 : 0.5 * g;
       const double reach = a * h + b * h * h;
-      const Aabb box_j = bodies_[j].shape().world_bounds(bodies_[j].placement());
-      Aabb grown_i = box_i;
-      grown_i.min -= Vec2::Constant(reach);
-      grown_i.max += Vec2::Constant(reach);
-      if (!grown_i.overlaps(box_j)) continue;
       const double limit = 0.5 * std::min(bodies_[i].thickness(), bodies_[j].thickness());
       if (reach <= limit) continue;
+      Aabb grown = boxes[i];
+      grown.min -= Vec2::Constant(reach);
+      grown.max += Vec2::Constant(reach);
+      if (!grown.overlaps(boxes[j])) continue;
       // The largest dt with a·dt + b·dt² <= limit.
       const double dt =
           b > 0.0 ? 2.0 * limit / (a + std::sqrt(a * a + 4.0 * b * limit)) : limit / a;
       safe = std::min(safe, dt);
     }
   }
-  return std::max(safe, settings_.min_step);
+  // Never below min_step (speeds beyond that are refused by the scene layer), never above h.
+  return std::min(h, std::max(safe, settings_.min_step));
 }
 
 void World::advance_to(double t) {

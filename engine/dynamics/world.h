@@ -31,9 +31,10 @@
 //     could meet within the step (each box grown by how far the body can move in it: speed and
 //     spin times the bounding radius, and gravity) move, relative to each other, at most half
 //     the thinner one's thickness (RigidBody::thickness). The crossing check at the step's end
-//     then sees any overlap before a body can get through to the other side. It costs nothing
-//     while every body is slow: the step is cut only when some body could move more than a
-//     quarter of the thinnest body's thickness in it.
+//     then sees any overlap before a body can get through to the other side (for convex
+//     bodies; a concave body's thickness is an average, see RigidBody::thickness). It costs
+//     nothing while every body is slow: the step is cut only when some body could move more
+//     than a quarter of the thinnest body's thickness in it.
 //  4. Sleeping (sleep_tracker.h): after the step, islands that have been still long enough
 //     fall asleep. Sleeping bodies are not moved and pairs of them with fixed or sleeping
 //     bodies are not tested; when nothing movable is awake, advance_to jumps straight to its

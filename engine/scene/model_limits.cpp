@@ -3,18 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <sstream>
 
+#include "engine/core/number_text.h"
 #include "engine/scene/scene_world.h"
 
 namespace rugosim {
 namespace {
 
 std::string number(double x) {
-  std::ostringstream out;
-  out.precision(4);
-  out << x;
-  return out.str();
+  return number_text(x, 4);
 }
 
 }  // namespace
@@ -34,18 +31,19 @@ std::vector<SceneError> check_model_limits(const World& world, const Scene& scen
     const double size = 2.0 * b.bounding_radius();
     if (size < kMinBodySize || size > kMaxBodySize) {
       error(i, "shape",
-            "the body is " + number(size) +
-                " m across; expected a body from 1e-06 to 1e+07 m across (rugosim's tolerances "
-                "are relative to the bodies' sizes, and past these they meet the limits of "
-                "double precision)");
+            "the body is " + number(size) + " m across; expected a body from " +
+                number(kMinBodySize) + " to " + number(kMaxBodySize) +
+                " m across (rugosim's tolerances are relative to the bodies' sizes, and past "
+                "these they meet the limits of double precision)");
       continue;
     }
     const double distance = b.state().position.norm();
     if (distance > kMaxDistanceOverSize * size) {
       error(i, "position",
             "the body is " + number(distance) + " m from the origin and " + number(size) +
-                " m across; expected it within 1e+06 of its size from the origin (farther, "
-                "its coordinates cannot resolve its smallest contact band)");
+                " m across; expected it within " + number(kMaxDistanceOverSize) +
+                " times its size from the origin (farther, its coordinates cannot resolve "
+                "its smallest contact band)");
     }
     const double lambda = b.shape().tolerances().range().hi;
     if (lambda > 0.5 * b.thickness()) {

@@ -352,11 +352,21 @@ void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& 
   }
 }
 
+// "a", "b" or "c"
+std::string quoted_list(const std::vector<std::string>& words) {
+  std::string out;
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    if (i > 0) out += i + 1 == words.size() ? " or " : ", ";
+    out += "\"" + words[i] + "\"";
+  }
+  return out;
+}
+
 void read_preset(Reader& r, const json& v, const std::string& path, std::string& preset) {
   r.string(v, path, preset);
   const std::vector<std::string>& presets = accuracy_preset_names();
   if (v.is_string() && std::find(presets.begin(), presets.end(), preset) == presets.end()) {
-    std::string message = "expected \"draft\", \"normal\" or \"precise\", got " + shown(v);
+    std::string message = "expected " + quoted_list(presets) + ", got " + shown(v);
     const std::string suggestion = closest_match(preset, presets);
     if (!suggestion.empty()) message += " (did you mean \"" + suggestion + "\"?)";
     r.error(path, message);

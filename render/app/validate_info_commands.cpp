@@ -1,3 +1,5 @@
+#include <string>
+
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
@@ -15,9 +17,16 @@ int run_validate(const std::string& scene_path) {
     fixed += world.body(i).fixed() ? 1u : 0u;
     segments += world.body(i).curve().size();
   }
+  // The preset, and the scene's own knobs on top of it: "normal", "draft with max_step 0.002".
+  std::string accuracy = loaded->scene.accuracy.preset;
+  const char* joint = " with ";
+  for (const auto& [key, value] : loaded->scene.accuracy.knobs) {
+    accuracy += fmt::format("{}{} {:g}", joint, key, value);
+    joint = ", ";
+  }
   fmt::print("{}: valid scene \"{}\": {} bodies ({} fixed), {} segments, {} s at accuracy {}\n",
              scene_path, loaded->scene.name, world.body_count(), fixed, segments,
-             loaded->scene.duration, loaded->scene.accuracy.preset);
+             loaded->scene.duration, accuracy);
   return kExitOk;
 }
 

@@ -22,6 +22,9 @@ constexpr int kDirtyMarginPx = 2;
 constexpr std::int64_t kPassCostPx = 128 * 128;
 constexpr std::size_t kMaxPasses = 6;
 constexpr double kFullRedrawShare = 0.6;
+// More moved bodies than this, and the frame is drawn whole without merging their rectangles
+// (merging is quadratic in their number, and so many rarely leave much of the frame alone).
+constexpr std::size_t kMaxMovedBodies = 64;
 
 // Picture numbers, unique in the process (Image::picture): two renderers never share one.
 std::atomic<std::uint64_t> next_picture{1};
@@ -424,6 +427,7 @@ std::optional<std::vector<PixelRect>> SceneRenderer::dirty_rects(const FrameSnap
         now.translation() == before.translation()) {
       continue;
     }
+    if (rects.size() >= 2 * kMaxMovedBodies) return std::nullopt;
     rects.push_back(window_rect(body_reach_[i], before, camera, kDirtyMarginPx));
     rects.push_back(window_rect(body_reach_[i], now, camera, kDirtyMarginPx));
   }

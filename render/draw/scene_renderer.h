@@ -14,7 +14,8 @@
 // that reach it (mesh_chunks.h). Every pixel outside them is already what a full redraw would
 // give, and inside them every triangle that covers a pixel is drawn, in the same order, so the
 // picture is bit for bit that of a full redraw (tested); a still floor or container costs
-// nothing once drawn.
+// nothing once drawn. This relies on the framebuffer holding what this renderer drew last:
+// give each renderer a context of its own (or draw nothing else into it between frames).
 #pragma once
 
 #include <cstdint>

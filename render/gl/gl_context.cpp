@@ -47,9 +47,7 @@ class OsmesaContext final : public GlContext {
  protected:
   // OSMesa needs a buffer to be current; frames go to the framebuffer object instead, so a
   // single pixel does.
-  bool bind() override {
-    return OSMesaMakeCurrent(context_, &dummy_, GL_UNSIGNED_BYTE, 1, 1) != 0;
-  }
+  bool bind() override { return OSMesaMakeCurrent(context_, &dummy_, GL_UNSIGNED_BYTE, 1, 1) != 0; }
 
  private:
   OSMesaContext context_ = nullptr;

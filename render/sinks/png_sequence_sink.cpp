@@ -187,6 +187,7 @@ void PngSequenceSink::write(const Image& frame, std::size_t index) {
   job.image.width = frame.width;
   job.image.height = frame.height;
   job.image.rgba.assign(frame.rgba.begin(), frame.rgba.end());
+  job.image.picture = frame.picture;
   {
     const std::lock_guard lock(mutex_);
     queue_.push_back(std::move(job));

@@ -270,8 +270,15 @@ TEST(Extremes, RestitutionZeroAndOne) {
     ASSERT_FALSE(h.empty());
     EXPECT_NEAR(h[0], 0.5, 1e-9);
     if (eps == 0.0) {
-      for (std::size_t k = 1; k < h.size(); ++k)
-        EXPECT_LT(h[k], 5e-4) << "apex " << k;
+      // After the impact (0.32 s) the disk never rises more than 0.1% of the drop above the
+      // floor (it hovers in its band, 1e-6 of its size).
+      double highest = 0.0;
+      for (std::size_t k = 0; k < w.samples.size(); ++k) {
+        if (static_cast<double>(k + 1) / 240.0 < 0.35) continue;
+        highest = std::max(highest, w.samples[k][1].position.y() - 0.2);
+      }
+      EXPECT_LT(highest, 5e-4);
+      RecordProperty("inelastic_highest_after_impact", scientific(highest));
     } else {
       ASSERT_GE(h.size(), 4u);
       for (std::size_t k = 1; k < 4; ++k)
@@ -437,8 +444,8 @@ TEST(Extremes, AThousandSegmentsOnOneBody) {
 }
 
 // A long run: 10⁵ steps of a disk bouncing elastically in a closed box without gravity (ε = 1,
-// μ = 0, no sleep), and 100 s of a disk rolling back and forth in a bowl of two inclines.
-// Expectation: no NaN, no crossing; the elastic disk keeps its energy to 1e-6 over 10⁵ steps.
+// μ = 0, no sleep) for 100 s. Expectation: no NaN, no crossing, over a hundred collisions, and
+// the disk keeps its energy to 1e-6.
 TEST(Extremes, LongRunOfAHundredThousandSteps) {
   World world(awake(Vec2::Zero()));
   const Material elastic = make_material(1.0, 1.0);

@@ -184,6 +184,27 @@ TEST(RigidBody, RecentredCurveHasItsCentroidAtTheOriginAndTheUserOriginRoundTrip
   }
 }
 
+// Thickness, 2 × area / perimeter: r for a disk, about t for a thin plate, half the side of a
+// square: never more than a convex body's least width.
+TEST(RigidBody, ThicknessIsTwiceAreaOverPerimeter) {
+  auto body_of = [](std::vector<Vec2> points) {
+    RigidBodyDesc d;
+    d.control_points = std::move(points);
+    return RigidBody(d);
+  };
+  EXPECT_NEAR(body_of(circle_control_points(0.2, 64)).thickness(), 0.2, 1e-6);
+  EXPECT_NEAR(body_of(box_control_points(1.0, 0.001, 16)).thickness(), 2.0 * 0.001 / 2.002, 1e-12);
+  EXPECT_NEAR(body_of(box_control_points(0.4, 0.4, 16)).thickness(), 0.2, 1e-12);
+  const RigidBody spinning = [&] {
+    RigidBodyDesc d;
+    d.control_points = box_control_points(0.4, 0.2, 16);
+    d.velocity = Vec2(3.0, 4.0);
+    d.angular_velocity = -2.0;
+    return RigidBody(d);
+  }();
+  EXPECT_NEAR(spinning.boundary_speed(), 5.0 + 2.0 * spinning.bounding_radius(), 1e-12);
+}
+
 TEST(RigidBody, BoundingRadiusHoldsTheCurve) {
   Rng rng(603);
   for (int c = 0; c < 30; ++c) {

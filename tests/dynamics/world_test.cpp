@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
@@ -14,6 +15,8 @@
 #include "engine/collision/collision_pipeline.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/geometry/shapes.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/scene/scene_world.h"
 #include "support/test_bodies.h"
 #include "support/test_output.h"
 
@@ -312,11 +315,53 @@ TEST(World, StartingInsideEachOtherEndsThroughCountedFallbacks) {
   EXPECT_EQ(world.time(), 0.01);
   EXPECT_GT(world.stats().min_step_fallbacks, 0u);
   EXPECT_GT(world.stats().crossing_fallbacks, 0u);
-  EXPECT_EQ(world.stats().fallbacks, world.stats().min_step_fallbacks +
-                                         world.stats().crossing_fallbacks +
-                                         world.stats().pass_fallbacks);
+  EXPECT_EQ(world.stats().fallbacks,
+            world.stats().min_step_fallbacks + world.stats().crossing_fallbacks +
+                world.stats().pass_fallbacks + world.stats().stalled_steps);
   // The min-step fallbacks stay in a state that already crosses: those count too.
   EXPECT_GE(world.stats().crossings, world.stats().crossing_fallbacks);
+}
+
+// A step cut short against tunnelling still ends every advance exactly at its target, even
+// with the time-of-impact tolerance as long as the step (then the shortest step allowed is
+// the longest, and the cut cannot go below it).
+TEST(World, TunnellingBoundNeverStepsPastTheTarget) {
+  WorldSettings settings;
+  settings.gravity = Vec2::Zero();
+  settings.min_step = 1e-3;
+  World world(settings);
+  RigidBodyDesc wall;
+  wall.control_points = box_control_points(0.01, 1.0, 16);
+  wall.fixed = true;
+  world.add_body(RigidBody(wall), "wall");
+  world.add_body(disk(0.025, 32, Vec2(-0.5, 0.1), Vec2(300.0, 0.0), make_material(0.5, 0.5)));
+  for (int k = 1; k <= 30; ++k) {
+    const double t = k / 700.0;  // not a multiple of the step
+    world.advance_to(t);
+    ASSERT_EQ(world.time(), t) << "frame " << k;
+  }
+}
+
+// Back-offs that get nowhere end in stalled steps, not in a crawl: seeds searched only 4
+// halvings deep (below what a scene may ask for) make the sharp box of the rough patch touch
+// and part the floor at the resolution of the search; two seconds still take a bounded time.
+TEST(World, CrawlingBackOffsEndInStalledSteps) {
+  const std::string path =
+      std::string(std::getenv("RUGOSIM_SOURCE_DIR")) + "/scenes/validation_rough_patch.json";
+  const Scene scene = load_scene_file(path).scene;
+  WorldSettings settings = world_settings(scene);
+  settings.narrow_phase.max_depth = 4;
+  World world(settings);
+  for (const RigidBodyDesc& desc : body_descriptions(scene))
+    world.add_body(RigidBody(desc));
+  world.advance_to(2.0);
+  EXPECT_EQ(world.time(), 2.0);
+  EXPECT_GE(world.stats().stalled_steps, 1u);
+  EXPECT_LT(world.stats().bisections, 2000u * 60u * 4u);  // far from a crawl at min_step
+  EXPECT_EQ(world.stats().fallbacks,
+            world.stats().min_step_fallbacks + world.stats().crossing_fallbacks +
+                world.stats().pass_fallbacks + world.stats().stalled_steps);
+  RecordProperty("stalled_steps", std::to_string(world.stats().stalled_steps));
 }
 
 TEST(World, RejectsBadSettings) {

@@ -255,8 +255,14 @@ TEST(SceneRenderer, IncrementalRedrawIsBitIdenticalToFullRedraw) {
     }
     EXPECT_GT(incremental.frames_partial(), clip.size() / 2);
     EXPECT_EQ(full.frames_partial(), 0u);
-    EXPECT_LT(static_cast<double>(incremental.pixels_redrawn()),
-              0.6 * static_cast<double>(incremental.frames_partial()) * 640 * 360);
+    // About five of the nine small bodies move in a frame, each covering 2% of it or less with
+    // its old and new places: partial frames redraw about a fifth of the frame (measured 0.18 to
+    // 0.26). Rectangles grown much beyond the bodies would fail here long before the 60% past
+    // which a frame is drawn whole.
+    const double share = static_cast<double>(incremental.pixels_redrawn()) /
+                         (static_cast<double>(incremental.frames_partial()) * 640 * 360);
+    EXPECT_LT(share, 0.35);
+    RecordProperty("redrawn_share_" + std::to_string(seed), std::to_string(share));
   }
 }
 
