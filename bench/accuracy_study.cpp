@@ -111,6 +111,16 @@ struct Summary {
   bool front_figure = false;
 };
 
+// Text for a Markdown table cell: '|' would end the cell.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
 double geometric_mean(const std::vector<double>& values) {
   double log_sum = 0.0;
   for (const double v : values)
@@ -191,7 +201,7 @@ void write_markdown(const fs::path& path, const std::vector<Summary>& all,
   out << "\n";
   for (std::size_t k = 0; k < scenes.size(); ++k) {
     const Row& first = by_label(all, presets.front()).rows[k];
-    out << "| " << scenes[k].name << " | " << first.measure << " |";
+    out << "| " << scenes[k].name << " | " << cell(first.measure) << " |";
     for (const std::string& p : presets)
       out << fmt::format(" {:.3g} |", by_label(all, p).rows[k].error);
     for (const std::string& p : presets)

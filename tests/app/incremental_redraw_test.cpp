@@ -14,6 +14,7 @@
 #include "render/draw/scene_renderer.h"
 #include "render/gl/gl_context.h"
 #include "support/program_under_test.h"
+#include "support/same_frames.h"
 
 namespace rugosim {
 namespace {
@@ -43,14 +44,7 @@ void expect_incremental_equals_full(const std::string& name, bool rugosity) {
   SceneRenderer incremental(*a, looks, settings);
   settings.incremental = false;
   SceneRenderer full(*b, looks, settings);
-  Image x, y;
-  for (const FrameSnapshot& frame : clip) {
-    incremental.draw(frame);
-    incremental.read(x);
-    full.draw(frame);
-    full.read(y);
-    ASSERT_EQ(x.rgba, y.rgba) << name << ", frame " << frame.frame;
-  }
+  ASSERT_EQ(testing::first_different_frame(incremental, full, clip), std::nullopt) << name;
   const std::size_t drawn = clip.size() - incremental.frames_reused();
   EXPECT_GT(incremental.frames_partial(), drawn / 2) << name;
 }

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/geometry/shapes.h"
+#include "support/same_frames.h"
 
 namespace rugosim {
 namespace {
@@ -244,15 +245,8 @@ TEST(SceneRenderer, IncrementalRedrawIsBitIdenticalToFullRedraw) {
     SceneRenderer incremental(*a, bodies, busy_settings(aa, true, rugosity));
     SceneRenderer full(*b, bodies, busy_settings(aa, false, rugosity));
     const std::vector<FrameSnapshot> clip = busy_clip(bodies.size(), seed);
-    Image x, y;
-    for (const FrameSnapshot& frame : clip) {
-      incremental.draw(frame);
-      incremental.read(x);
-      full.draw(frame);
-      full.read(y);
-      ASSERT_EQ(x.rgba, y.rgba) << "frame " << frame.frame << ", anti-aliasing "
-                                << anti_aliasing_name(aa) << ", rugosity " << rugosity;
-    }
+    ASSERT_EQ(testing::first_different_frame(incremental, full, clip), std::nullopt)
+        << "anti-aliasing " << anti_aliasing_name(aa) << ", rugosity " << rugosity;
     EXPECT_GT(incremental.frames_partial(), clip.size() / 2);
     EXPECT_EQ(full.frames_partial(), 0u);
     // About five of the nine small bodies move in a frame, each covering 2% of it or less with
