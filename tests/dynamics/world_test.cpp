@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 #include <sstream>
 #include <stdexcept>
@@ -17,6 +16,7 @@
 #include "engine/geometry/shapes.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/scene/scene_world.h"
+#include "support/program_under_test.h"
 #include "support/test_bodies.h"
 #include "support/test_output.h"
 
@@ -347,7 +347,7 @@ TEST(World, TunnellingBoundNeverStepsPastTheTarget) {
 // and part the floor at the resolution of the search; two seconds still take a bounded time.
 TEST(World, CrawlingBackOffsEndInStalledSteps) {
   const std::string path =
-      std::string(std::getenv("RUGOSIM_SOURCE_DIR")) + "/scenes/validation_rough_patch.json";
+      (testing::source_dir() / "scenes" / "validation_rough_patch.json").string();
   const Scene scene = load_scene_file(path).scene;
   WorldSettings settings = world_settings(scene);
   settings.narrow_phase.max_depth = 4;
