@@ -68,16 +68,14 @@ std::vector<Setting> settings() {
 
 // The tightest settings of the study: the figure scenes' reference.
 Accuracy reference_accuracy() {
-  Accuracy a;
-  a.max_step = 6.25e-5;
-  a.toi_tolerance = 1e-11;
-  a.max_bisections = 200;
-  a.newton_tolerance = 1e-14;
-  a.newton_iterations = 100;
-  a.seed_depth = 60;
-  a.contact_passes = 1024;
-  a.contact_threshold = 1e-5;
-  return a;
+  return Accuracy{.max_step = 6.25e-5,
+                  .toi_tolerance = 1e-11,
+                  .max_bisections = 200,
+                  .newton_tolerance = 1e-14,
+                  .newton_iterations = 100,
+                  .seed_depth = 60,
+                  .contact_passes = 1024,
+                  .contact_threshold = 1e-5};
 }
 
 struct SceneFile {

@@ -69,26 +69,22 @@ const std::vector<std::string>& accuracy_preset_names() {
 std::optional<Accuracy> accuracy_preset(std::string_view name) {
   if (name == "normal") return Accuracy{};
   if (name == "draft") {
-    Accuracy a;
-    a.max_step = 4e-3;
-    a.toi_tolerance = 1e-7;
-    a.max_bisections = 30;
-    a.newton_tolerance = 1e-9;
-    a.newton_iterations = 16;
-    a.seed_depth = 24;
-    a.contact_passes = 32;
-    return a;
+    return Accuracy{.max_step = 4e-3,
+                    .toi_tolerance = 1e-7,
+                    .max_bisections = 30,
+                    .newton_tolerance = 1e-9,
+                    .newton_iterations = 16,
+                    .seed_depth = 24,
+                    .contact_passes = 32};
   }
   if (name == "precise") {
-    Accuracy a;
-    a.max_step = 2.5e-4;
-    a.toi_tolerance = 1e-10;
-    a.max_bisections = 80;
-    a.newton_tolerance = 1e-13;
-    a.newton_iterations = 60;
-    a.seed_depth = 52;
-    a.contact_passes = 128;
-    return a;
+    return Accuracy{.max_step = 2.5e-4,
+                    .toi_tolerance = 1e-10,
+                    .max_bisections = 80,
+                    .newton_tolerance = 1e-13,
+                    .newton_iterations = 60,
+                    .seed_depth = 52,
+                    .contact_passes = 128};
   }
   return std::nullopt;
 }
