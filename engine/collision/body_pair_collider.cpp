@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "engine/collision/segment_crossing.h"
 #include "engine/collision/segment_distance.h"
@@ -103,7 +104,13 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
   for (const LeafPair& pair : leaf_pairs_) {
     const CubicSegment& seg_a = a.curve().segment(pair.segment_a);
     const CubicSegment seg_b = b.curve().segment(pair.segment_b).transformed(b_to_a);
-    const NearestPoints near = nearest_points(seg_a, seg_b, settings_);
+    // No contact of this pair can have a wider band than this: farther apart, it is separated,
+    // and proving that is much cheaper than finding the nearest points exactly.
+    const double widest_band = a.segment_band(pair.segment_a) + b.segment_band(pair.segment_b);
+    const std::optional<NearestPoints> within =
+        nearest_points_within(seg_a, seg_b, widest_band, settings_);
+    if (!within) continue;  // separated
+    const NearestPoints& near = *within;
     if (near.distance <= crossing_distance(seg_a, seg_b, settings_)) {
       if (const auto crossing = crossing_from(near, seg_a, seg_b, settings_)) {
         out.intersections.push_back({pair.segment_a, pair.segment_b, crossing->t_a, crossing->t_b,

@@ -1,5 +1,6 @@
 #include "engine/collision/collision_shape.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -25,7 +26,11 @@ CollisionShape::CollisionShape(PeriodicBSpline curve, ToleranceProfile tolerance
     : curve_(std::move(curve)),
       tolerances_(checked(curve_, std::move(tolerances))),
       min_band_(kMinContactBandRelative * curve_.hull_bounds().diagonal()),
-      tree_(curve_, tolerances_, min_band_) {}
+      tree_(curve_, tolerances_, min_band_) {
+  segment_band_.reserve(curve_.size());
+  for (std::size_t j = 0; j < curve_.size(); ++j)
+    segment_band_.push_back(std::max(tolerances_.segment_range(j).hi, min_band_));
+}
 
 Aabb CollisionShape::world_bounds(const Transform2& placement) const {
   Aabb box;

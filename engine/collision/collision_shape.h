@@ -3,6 +3,9 @@
 // changes while the body moves; placement comes with each query as a Transform2.
 #pragma once
 
+#include <cstddef>
+#include <vector>
+
 #include "engine/collision/aobb_tree.h"
 #include "engine/core/aabb.h"
 #include "engine/core/transform.h"
@@ -27,6 +30,9 @@ class CollisionShape {
   // m: kMinContactBandRelative times the curve's size. A pair is in contact when its distance
   // is within max(λ_a(t_a) + λ_b(t_b), min_band_a + min_band_b); the leaf boxes hold it too.
   double min_band() const { return min_band_; }
+  // m: the largest tolerance λ_j(t) over segment j (ToleranceProfile::segment_range), at least
+  // min_band(): no contact on segment j can have a wider share of the band.
+  double segment_band(std::size_t j) const { return segment_band_[j]; }
 
   // World box around the placed body and its tolerance band, for the broad phase.
   Aabb world_bounds(const Transform2& placement) const;
@@ -35,6 +41,7 @@ class CollisionShape {
   PeriodicBSpline curve_;
   ToleranceProfile tolerances_;
   double min_band_ = 0.0;
+  std::vector<double> segment_band_;  // m, per segment
   AobbTree tree_;
 };
 

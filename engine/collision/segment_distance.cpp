@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/collision/bezier_bounds.h"
+#include "engine/collision/circle_bound.h"
 #include "engine/collision/segment_pair_newton.h"
 
 namespace rugosim {
@@ -49,14 +50,17 @@ struct Candidate {
   double distance = std::numeric_limits<double>::infinity();
 };
 
-// The slab certificate of the header, step 3, on the rectangle `box`: a lower bound of the
-// distance over it, from the local minimum m found in it.
+// The certificate of the header, step 3, on the rectangle `box`: a lower bound of the distance
+// over it, from the local minimum m found in it. The slab first; when it falls short of
+// `needed`, the circle (circle_bound.h), which holds where a convex piece rests in a concave one.
 double certified_bound(const CubicSegment& a, const CubicSegment& b, const ParameterBox& box,
-                       const LocalMinimum& m) {
+                       const LocalMinimum& m, double needed) {
   const Vec2 r = a.point(m.s) - b.point(m.t);
   const double d = r.norm();
   if (!(d > 0.0)) return 0.0;
-  return separating_axis_bound(a, b, r / d, box.s0, box.s1, box.t0, box.t1);
+  const double slab = separating_axis_bound(a, b, r / d, box.s0, box.s1, box.t0, box.t1);
+  if (slab >= needed) return slab;
+  return std::max(slab, circle_separation_bound(a, b, m.s, m.t, box.s0, box.s1, box.t0, box.t1));
 }
 
 struct Cell {
@@ -144,7 +148,10 @@ Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const T
     const double d_seed = std::sqrt(at_seed.distance2);
     if (d_seed < best.distance) best = {s, t, d_seed};
     if (best.distance <= tol.zero) break;
-    if (certified_bound(a, b, box, at_seed) >= best.distance - tol.accuracy) continue;
+    if (certified_bound(a, b, box, at_seed, best.distance - tol.accuracy) >=
+        best.distance - tol.accuracy) {
+      continue;
+    }
     const LocalMinimum m =
         descend_to_local_minimum(a, b, box, s, t, tol.zero * tol.zero, cell_iterations);
     const double d = std::sqrt(m.distance2);
@@ -158,7 +165,10 @@ Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const T
       if (d_polished < d) best = {polished.s, polished.t, d_polished};
     }
     if (best.distance <= tol.zero) break;
-    if (certified_bound(a, b, box, m) >= best.distance - tol.accuracy) continue;
+    if (certified_bound(a, b, box, m, best.distance - tol.accuracy) >=
+        best.distance - tol.accuracy) {
+      continue;
+    }
     if (cell.depth < settings.max_depth) {
       push_children(cell, best.distance - tol.accuracy, heap);
       continue;
@@ -176,6 +186,45 @@ Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const T
   return best;
 }
 
+// The decision form of step 4: whether every pair of points is farther apart than `level`,
+// proved by the same bounds (a rectangle is dropped once its chord bound or its certificate
+// exceeds the level). False as soon as a pair at most `level` apart turns up, or when the search
+// runs out of depth or rectangles before it could prove it.
+bool proves_farther_than(const CubicSegment& a, const CubicSegment& b, const Tolerances& tol,
+                         const NarrowPhaseSettings& settings, double level) {
+  const int cell_iterations = std::min(kCellIterations, settings.seed_iterations);
+  // push_children drops children whose bound is at least its cutoff; here only those strictly
+  // above the level may go.
+  const double cutoff = std::nextafter(level, std::numeric_limits<double>::infinity());
+  std::vector<Cell> heap;
+  heap.reserve(64);
+  Cell root;
+  root.pa = a.bezier();
+  root.pb = b.bezier();
+  root.deviation_a = chord_deviation(root.pa);
+  root.deviation_b = chord_deviation(root.pb);
+  push_children(root, cutoff, heap);
+  for (int examined = 0; !heap.empty(); ++examined) {
+    if (examined >= settings.max_cells) return false;
+    std::pop_heap(heap.begin(), heap.end(), farther);
+    const Cell cell = heap.back();
+    heap.pop_back();
+    const ChordPair seed = closest_on_chords(cell.pa[0], cell.pa[3], cell.pb[0], cell.pb[3]);
+    const ParameterBox& box = cell.box;
+    const double s = box.s0 + seed.u * (box.s1 - box.s0);
+    const double t = box.t0 + seed.v * (box.t1 - box.t0);
+    const LocalMinimum at_seed{s, t, (a.point(s) - b.point(t)).squaredNorm()};
+    if (std::sqrt(at_seed.distance2) <= level) return false;
+    if (certified_bound(a, b, box, at_seed, level) > level) continue;
+    const LocalMinimum m =
+        descend_to_local_minimum(a, b, box, s, t, tol.zero * tol.zero, cell_iterations);
+    if (std::sqrt(m.distance2) <= level) return false;
+    if (certified_bound(a, b, box, m, level) > level) continue;
+    if (cell.depth >= settings.max_depth) return false;
+    push_children(cell, cutoff, heap);
+  }
+  return true;
+}
 }  // namespace
 
 double nearest_points_accuracy(const CubicSegment& a, const CubicSegment& b,
@@ -188,17 +237,27 @@ double crossing_distance(const CubicSegment& a, const CubicSegment& b,
   return tolerances(a, b, settings).zero;
 }
 
-NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b,
-                             const NarrowPhaseSettings& settings) {
+std::optional<NearestPoints> nearest_points_within(const CubicSegment& a, const CubicSegment& b,
+                                                   double threshold,
+                                                   const NarrowPhaseSettings& settings) {
   const Tolerances tol = tolerances(a, b, settings);
   const auto& pa = a.bezier();
   const auto& pb = b.bezier();
   const ParameterBox unit;
+  // A proof of "farther than the threshold" must hold whatever the rounding of the distance a
+  // full search would compute, so it clears the threshold by the accuracy; and touching pairs
+  // (crossing_distance) are never proved apart.
+  const double proof_level = std::max(threshold, tol.zero) + tol.accuracy;
+  const bool may_prove = std::isfinite(threshold);
   const auto settled = [&](const LocalMinimum& m) {
     const double d = std::sqrt(m.distance2);
-    return d <= tol.zero || certified_bound(a, b, unit, m) >= d - tol.accuracy;
+    return d <= tol.zero || certified_bound(a, b, unit, m, d - tol.accuracy) >= d - tol.accuracy;
   };
   const ChordPair seed = closest_on_chords(pa[0], pa[3], pb[0], pb[3]);
+  // The cheapest proof: the chord bound of the whole square.
+  if (may_prove && seed.distance - chord_deviation(pa) - chord_deviation(pb) > proof_level) {
+    return std::nullopt;
+  }
   LocalMinimum m = descend_to_local_minimum(a, b, unit, seed.u, seed.v, tol.zero * tol.zero,
                                             settings.seed_iterations);
   bool done = settled(m);
@@ -215,7 +274,15 @@ NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b,
     }
   }
   Candidate best{m.s, m.t, std::sqrt(m.distance2)};
-  if (!done) best = branch_and_bound(a, b, tol, settings, best);
+  if (!done) {
+    // Proving that nothing comes within the threshold is far cheaper than pinning down the
+    // minimum of a pair that is well apart (a concave piece facing a convex one): try it first.
+    if (may_prove && best.distance > proof_level &&
+        proves_farther_than(a, b, tol, settings, proof_level)) {
+      return std::nullopt;
+    }
+    best = branch_and_bound(a, b, tol, settings, best);
+  }
   NearestPoints out;
   out.t_a = best.s;
   out.t_b = best.t;
@@ -223,6 +290,11 @@ NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b,
   out.point_b = b.point(best.t);
   out.distance = (out.point_a - out.point_b).norm();
   return out;
+}
+
+NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b,
+                             const NarrowPhaseSettings& settings) {
+  return *nearest_points_within(a, b, std::numeric_limits<double>::infinity(), settings);
 }
 
 }  // namespace rugosim

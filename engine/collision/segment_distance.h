@@ -37,6 +37,8 @@
 // (segment_crossing.h) reports exactly those pairs.
 #pragma once
 
+#include <optional>
+
 #include "engine/core/types.h"
 #include "engine/geometry/cubic_segment.h"
 
@@ -70,6 +72,17 @@ struct NearestPoints {
 // Globally nearest points of a and b, given in the same frame.
 NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b,
                              const NarrowPhaseSettings& settings = {});
+
+// The same, for a caller that needs the nearest points only of pairs that come within
+// `threshold` (m) of each other (the collision layer: a pair farther apart than its tolerance
+// band is simply separated): nullopt once it has proved that every pair of points is farther
+// apart than max(threshold, crossing_distance()) + nearest_points_accuracy(), which for a pair well
+// apart takes a few bounds where pinning down the exact minimum can take a long search. Whenever it
+// returns a value, that value is exactly nearest_points(a, b, settings), bit for bit; it may also
+// return one for a pair farther apart than the threshold, when no proof came cheaply.
+std::optional<NearestPoints> nearest_points_within(const CubicSegment& a, const CubicSegment& b,
+                                                   double threshold,
+                                                   const NarrowPhaseSettings& settings = {});
 
 // How far above the true minimum nearest_points() may be, m: relative_accuracy of the larger
 // segment's hull diagonal plus 64 roundings of the largest coordinate sum (evaluations far

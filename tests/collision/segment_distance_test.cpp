@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -416,6 +417,57 @@ TEST(NearestPoints, ShallowSeedSearchStaysCloseToTheDenseSearch) {
     }
   }
   RecordProperty("shallow_worst_relative_excess", std::to_string(worst));
+}
+
+// nearest_points_within: a value is nearest_points' own, bit for bit; nullopt only for pairs
+// that the dense search shows to be farther apart than the threshold. Thresholds straddle each
+// pair's distance, where a proof is hardest.
+TEST(NearestPointsWithin, AgreesWithNearestPointsAndProvesOnlyTrueSeparations) {
+  Rng rng(1207);
+  // Pairs well apart, thresholds under half their distance: the proofs the collision layer
+  // relies on (the rest of them get their exact value, which was cheaper than a proof).
+  int proved_well_apart = 0, well_apart = 0;
+  for (int k = 0; k < static_cast<int>(PairKind::kCount); ++k) {
+    const auto kind = static_cast<PairKind>(k);
+    for (int c = 0; c < 300; ++c) {
+      const auto [a, b] = testing::random_segment_pair(rng, kind);
+      const NearestPoints full = nearest_points(a, b);
+      const double reference = reference_distance(a, b);
+      const double size = std::max({pair_size(a, b), reference, 1e-300});
+      const double slack = 1e-9 * size + 1e-14 * pair_magnitude(a, b);
+      for (const double ratio : {0.0, 0.5, 0.9, 0.999, 1.001, 1.1, 2.0}) {
+        const double threshold = ratio * reference;
+        const std::optional<NearestPoints> within = nearest_points_within(a, b, threshold);
+        const bool apart = ratio <= 0.5 && reference > 1e-6 * size;
+        well_apart += apart ? 1 : 0;
+        if (within) {
+          EXPECT_EQ(within->t_a, full.t_a) << testing::pair_kind_name(kind) << " case " << c;
+          EXPECT_EQ(within->t_b, full.t_b);
+          EXPECT_EQ(within->distance, full.distance);
+        } else {
+          proved_well_apart += apart ? 1 : 0;
+          EXPECT_GT(reference + slack, threshold)
+              << testing::pair_kind_name(kind) << " case " << c << " ratio " << ratio;
+          // Touching pairs are never proved apart, whatever the threshold.
+          EXPECT_GT(full.distance, crossing_distance(a, b));
+        }
+      }
+    }
+  }
+  std::printf("  %d of %d pairs well apart proved farther than the threshold\n", proved_well_apart,
+              well_apart);
+  EXPECT_GE(proved_well_apart, well_apart / 4);
+}
+
+// An infinite threshold never proves anything: nearest_points itself.
+TEST(NearestPointsWithin, InfiniteThresholdIsTheFullSearch) {
+  Rng rng(99);
+  for (int c = 0; c < 200; ++c) {
+    const auto [a, b] = testing::random_segment_pair(rng, static_cast<PairKind>(c % 7));
+    const auto within = nearest_points_within(a, b, std::numeric_limits<double>::infinity());
+    ASSERT_TRUE(within.has_value());
+    EXPECT_EQ(within->distance, nearest_points(a, b).distance);
+  }
 }
 
 }  // namespace

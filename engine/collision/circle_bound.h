@@ -1,0 +1,32 @@
+// The curved certificate of the narrow phase (segment_distance.h): a lower bound of the distance
+// between two cubic pieces from a circle that holds one piece inside and leaves the other
+// outside.
+//
+// The slab bound (bezier_bounds.h) separates the pieces by a line, which is exact when both bend
+// away from each other but fails when a convex piece rests in a concave one, as rough bodies in a
+// pile do all the time: the concave piece bends towards the other on both sides of the nearest
+// points, so no line through the gap clears it, and the search had to shrink its rectangles to
+// where the bend is below the accuracy (about twenty halvings). A circle between the two
+// curvatures clears both pieces at once and is as tight as the slab at the nearest points.
+//
+// With P(x) = ‖x − c‖² along a piece, the inner piece lies in the disk of radius √max P and the
+// outer one outside that of radius √min P, so ‖a − b‖ ≥ √min P_outer − √max P_inner. Both
+// extremes come from the reference point (s, t) alone once the rectangle's second derivatives
+// have the right sign: a concave P lies below its tangent at t, a convex one above (the signs
+// are proved over the whole interval by Bernstein coefficients of P'', a quartic).
+#pragma once
+
+#include "engine/geometry/cubic_segment.h"
+
+namespace rugosim {
+
+// A lower bound (m) of ‖a(s) − b(t)‖ over s in [s0, s1] and t in [t0, t1], from a circle centred
+// on the line through a(s_ref) and b(t_ref) (points of the rectangle, normally a local minimum of
+// the distance in it, where the bound is tight), with a radius between the two pieces'
+// curvatures there. −infinity when the pieces do not bend so that such a circle fits (both
+// straight, or the convex one flatter than the concave one) or when the signs cannot be proved
+// over the rectangle; the caller then falls back on other bounds or on smaller rectangles.
+double circle_separation_bound(const CubicSegment& a, const CubicSegment& b, double s_ref,
+                               double t_ref, double s0, double s1, double t0, double t1);
+
+}  // namespace rugosim
