@@ -182,10 +182,14 @@ AobbTree::AobbTree(const PeriodicBSpline& curve, const ToleranceProfile& toleran
     }
   }
   if (depth_ > kMaxDepth) throw std::length_error("AobbTree: tree too deep for the query stack");
+  for (const std::uint32_t leaf : leaf_node_) {
+    for (const Vec2& corner : nodes_[leaf].box.corners())
+      reach_ = std::max(reach_, corner.norm());
+  }
 }
 
 void AobbTree::query(const AobbTree& other, const Transform2& other_to_this,
-                     std::vector<LeafPair>& out) const {
+                     std::vector<LeafPair>& out, double slack) const {
   // Depth-first: at most one pending sibling per level of either tree waits at a time, so the
   // fixed stack cannot overflow. Entries hold indices only (no member initialisers), so the
   // stack costs nothing to set up; the other node's box is placed when its pair is tested.
@@ -201,7 +205,7 @@ void AobbTree::query(const AobbTree& other, const Transform2& other_to_this,
     const Node& na = nodes_[p.a];
     const Node& nb = other.nodes_[p.b];
     const Obb b_box = nb.box.transformed(other_to_this);
-    if (!obb_overlap(na.box, b_box)) continue;
+    if (!obb_overlap(na.box, b_box, slack)) continue;
     if (na.is_leaf() && nb.is_leaf()) {
       out.push_back({na.segment, nb.segment});
     } else if (!na.is_leaf() && (nb.is_leaf() || box_size(na.box) >= box_size(nb.box))) {

@@ -81,14 +81,22 @@ class AobbTree {
   // overlap once the other tree is placed in this tree's frame by `other_to_this` (that is
   // inverse(X_this) * X_other, computed once per body pair). The result is exactly the set an
   // all-pairs test of the leaf boxes gives, in depth-first order. Allocates nothing except
-  // when `out` grows.
-  void query(const AobbTree& other, const Transform2& other_to_this,
-             std::vector<LeafPair>& out) const;
+  // when `out` grows. With a slack (m) boxes count as overlapping when they come within about
+  // that distance (obb_overlap.h): the pairs that may overlap once the trees have moved
+  // relative to each other by at most `slack`; the order of the pairs without slack is kept
+  // within that longer list.
+  void query(const AobbTree& other, const Transform2& other_to_this, std::vector<LeafPair>& out,
+             double slack = 0.0) const;
+
+  // m: the largest distance of any leaf box corner from the body frame's origin; no point of
+  // the boundary or its band is farther out.
+  double reach() const { return reach_; }
 
  private:
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> leaf_node_;  // segment -> node index
   int depth_ = 0;
+  double reach_ = 0.0;  // m
 };
 
 }  // namespace rugosim

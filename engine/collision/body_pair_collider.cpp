@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "engine/collision/obb_overlap.h"
 #include "engine/collision/segment_crossing.h"
 #include "engine/collision/segment_distance.h"
 
@@ -89,17 +90,50 @@ void merge_duplicate_contacts(std::vector<Contact>& contacts, std::size_t segmen
   contacts = std::move(kept);
 }
 
+void BodyPairCollider::find_leaf_pairs(const CollisionShape& a, const CollisionShape& b,
+                                       const Transform2& b_to_a, LeafPairCache* cache) {
+  leaf_pairs_.clear();
+  if (cache == nullptr) {
+    a.tree().query(b.tree(), b_to_a, leaf_pairs_);
+    return;
+  }
+  // How far any point of B's boxes has moved relative to A since the candidates were found:
+  // ‖R₁ − R₀‖·reach + ‖t₁ − t₀‖, with ‖R₁ − R₀‖ = √(Δcos² + Δsin²) for plane rotations.
+  bool valid = cache->a == &a && cache->b == &b;
+  if (valid) {
+    const double dc = b_to_a.cos_angle() - cache->b_to_a.cos_angle();
+    const double ds = b_to_a.sin_angle() - cache->b_to_a.sin_angle();
+    const double moved = std::sqrt(dc * dc + ds * ds) * b.tree().reach() +
+                         (b_to_a.translation() - cache->b_to_a.translation()).norm();
+    valid = moved <= cache->margin;
+  }
+  if (!valid) {
+    cache->a = &a;
+    cache->b = &b;
+    cache->b_to_a = b_to_a;
+    cache->margin = LeafPairCache::kMarginRelative * std::min(a.tree().reach(), b.tree().reach());
+    cache->candidates.clear();
+    a.tree().query(b.tree(), b_to_a, cache->candidates, cache->margin);
+  }
+  // The query's own test at the leaves, in its order.
+  for (const LeafPair& pair : cache->candidates) {
+    if (obb_overlap(a.tree().leaf_box(pair.segment_a),
+                    b.tree().leaf_box(pair.segment_b).transformed(b_to_a))) {
+      leaf_pairs_.push_back(pair);
+    }
+  }
+}
+
 void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_a,
                                const CollisionShape& b, const Transform2& place_b,
-                               ContactManifold& out) {
+                               ContactManifold& out, LeafPairCache* cache) {
   out.intersections.clear();
   out.contacts.clear();
   candidates_.clear();
-  leaf_pairs_.clear();
 
   // Work in A's frame: A's segments are used as stored, only B's are moved.
   const Transform2 b_to_a = place_a.inverse() * place_b;
-  a.tree().query(b.tree(), b_to_a, leaf_pairs_);
+  find_leaf_pairs(a, b, b_to_a, cache);
 
   for (const LeafPair& pair : leaf_pairs_) {
     const CubicSegment& seg_a = a.curve().segment(pair.segment_a);

@@ -1,8 +1,37 @@
 #include "engine/collision/collision_pipeline.h"
 
-namespace rugosim {
+#include <algorithm>
 
-const std::vector<ContactManifold>& CollisionPipeline::detect(std::span<const PlacedShape> bodies) {
+namespace rugosim {
+namespace {
+
+// Below this many pairs a step's narrow phase is too short to be worth sharing out.
+constexpr std::size_t kParallelPairs = 8;
+
+}  // namespace
+
+void CollisionPipeline::carry_caches_over(const std::vector<BodyPair>& pairs) {
+  // Both lists are sorted by (a, b): one merge.
+  const auto before = [](const BodyPair& p, const BodyPair& q) {
+    return p.a < q.a || (p.a == q.a && p.b < q.b);
+  };
+  if (next_caches_.size() < pairs.size()) next_caches_.resize(pairs.size());
+  std::size_t old = 0;
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    while (old < cache_pairs_.size() && before(cache_pairs_[old], pairs[k]))
+      ++old;
+    if (old < cache_pairs_.size() && cache_pairs_[old] == pairs[k]) {
+      std::swap(next_caches_[k], caches_[old]);
+    } else {
+      next_caches_[k].a = nullptr;  // a new pair: nothing cached
+    }
+  }
+  std::swap(caches_, next_caches_);
+  cache_pairs_ = pairs;
+}
+
+const std::vector<ContactManifold>& CollisionPipeline::detect(std::span<const PlacedShape> bodies,
+                                                              ThreadPool* pool) {
   counts_ = {};
   manifolds_.clear();
   proxies_.resize(bodies.size());
@@ -14,17 +43,40 @@ const std::vector<ContactManifold>& CollisionPipeline::detect(std::span<const Pl
   near_pairs_ = broad_phase_.find_pairs(proxies_);
   const std::vector<BodyPair>& pairs = near_pairs_;
   counts_.body_pairs = pairs.size();
-  for (const BodyPair& pair : pairs) {
-    const PlacedShape& a = bodies[pair.a];
-    const PlacedShape& b = bodies[pair.b];
-    collider_.collide(*a.shape, a.placement, *b.shape, b.placement, scratch_);
-    counts_.leaf_pairs += collider_.last_leaf_pairs().size();
-    if (scratch_.state() == PairState::kSeparated) continue;
-    scratch_.body_a = pair.a;
-    scratch_.body_b = pair.b;
-    counts_.intersections += scratch_.intersections.size();
-    counts_.contacts += scratch_.contacts.size();
-    manifolds_.push_back(scratch_);
+  if (results_.size() < pairs.size()) results_.resize(pairs.size());
+  const int threads = pool != nullptr && pairs.size() >= kParallelPairs ? pool->size() : 1;
+  while (colliders_.size() < static_cast<std::size_t>(threads))
+    colliders_.emplace_back(narrow_phase_);
+  carry_caches_over(pairs);
+
+  const auto collide_pairs = [&](std::size_t begin, std::size_t end, int thread) {
+    BodyPairCollider& collider = colliders_[static_cast<std::size_t>(thread)];
+    for (std::size_t k = begin; k < end; ++k) {
+      const PlacedShape& a = bodies[pairs[k].a];
+      const PlacedShape& b = bodies[pairs[k].b];
+      PairResult& result = results_[k];
+      collider.collide(*a.shape, a.placement, *b.shape, b.placement, result.manifold, &caches_[k]);
+      result.leaf_pairs = collider.last_leaf_pairs().size();
+    }
+  };
+  if (threads > 1) {
+    // Small chunks: the cost of a pair ranges from a box test to a long search.
+    const std::size_t grain =
+        std::max<std::size_t>(1, pairs.size() / (8 * static_cast<std::size_t>(threads)));
+    pool->parallel_for(pairs.size(), grain, collide_pairs);
+  } else {
+    collide_pairs(0, pairs.size(), 0);
+  }
+
+  for (std::size_t k = 0; k < pairs.size(); ++k) {
+    PairResult& result = results_[k];
+    counts_.leaf_pairs += result.leaf_pairs;
+    if (result.manifold.state() == PairState::kSeparated) continue;
+    result.manifold.body_a = pairs[k].a;
+    result.manifold.body_b = pairs[k].b;
+    counts_.intersections += result.manifold.intersections.size();
+    counts_.contacts += result.manifold.contacts.size();
+    manifolds_.push_back(result.manifold);
   }
   return manifolds_;
 }

@@ -1,5 +1,13 @@
 // Collision detection for a whole world: the broad phase picks the body pairs whose boxes
 // overlap, and each pair goes through the trees and the narrow phase (BodyPairCollider).
+//
+// The pairs are independent, so with a thread pool they are shared among its threads, each
+// with a collider of its own; each pair's result goes to its own slot and the slots are read in
+// pair order, so the manifolds are the same, bit for bit, whatever the number of threads.
+//
+// Each pair keeps what its tree query found from call to call (LeafPairCache), as long as the
+// broad phase keeps finding it: in a pile, where bodies barely move between steps, the trees
+// are queried again only now and then.
 #pragma once
 
 #include <cstddef>
@@ -10,6 +18,7 @@
 #include "engine/collision/broad_phase.h"
 #include "engine/collision/collision_shape.h"
 #include "engine/collision/contact.h"
+#include "engine/core/thread_pool.h"
 #include "engine/core/transform.h"
 
 namespace rugosim {
@@ -31,11 +40,13 @@ struct CollisionCounts {
 class CollisionPipeline {
  public:
   explicit CollisionPipeline(const NarrowPhaseSettings& narrow_phase = {})
-      : collider_(narrow_phase) {}
+      : narrow_phase_(narrow_phase) {}
 
   // One manifold per body pair that crosses or touches within its bands, sorted by
-  // (body_a, body_b) with body_a < body_b; body indices are positions in `bodies`.
-  const std::vector<ContactManifold>& detect(std::span<const PlacedShape> bodies);
+  // (body_a, body_b) with body_a < body_b; body indices are positions in `bodies`. The pairs
+  // are shared among the threads of `pool` when one is given.
+  const std::vector<ContactManifold>& detect(std::span<const PlacedShape> bodies,
+                                             ThreadPool* pool = nullptr);
 
   const CollisionCounts& counts() const { return counts_; }
   // The broad-phase pairs of the last detect(): bodies whose boxes (band included) overlap,
@@ -43,12 +54,27 @@ class CollisionPipeline {
   const std::vector<BodyPair>& near_pairs() const { return near_pairs_; }
 
  private:
+  // Moves the caches of the last call's pairs to their places in `pairs` (sorted by (a, b)).
+  void carry_caches_over(const std::vector<BodyPair>& pairs);
+
+  // What the narrow phase found for one broad-phase pair.
+  struct PairResult {
+    ContactManifold manifold;
+    std::size_t leaf_pairs = 0;
+  };
+
+  NarrowPhaseSettings narrow_phase_;
   SweepAndPrune broad_phase_;
-  BodyPairCollider collider_;
+  std::vector<BodyPairCollider> colliders_;  // one per thread: they keep scratch buffers
   std::vector<BroadPhaseProxy> proxies_;
   std::vector<ContactManifold> manifolds_;
   std::vector<BodyPair> near_pairs_;
-  ContactManifold scratch_;
+  std::vector<PairResult> results_;  // per pair of near_pairs_, reused between calls
+  // Leaf-pair caches (body_pair_collider.h) of the pairs of the last call, in their order; a
+  // pair that is still near takes its cache over to the next call.
+  std::vector<LeafPairCache> caches_;
+  std::vector<LeafPairCache> next_caches_;
+  std::vector<BodyPair> cache_pairs_;
   CollisionCounts counts_;
 };
 

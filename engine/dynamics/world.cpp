@@ -1,9 +1,11 @@
 #include "engine/dynamics/world.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -15,6 +17,10 @@ namespace rugosim {
 namespace {
 
 using BodyPairKey = std::pair<std::size_t, std::size_t>;
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 bool any_crossing(const std::vector<ContactManifold>& manifolds) {
   return std::any_of(manifolds.begin(), manifolds.end(), [](const ContactManifold& m) {
@@ -64,6 +70,10 @@ World::World(WorldSettings settings)
     throw std::invalid_argument(
         "narrow phase: relative_accuracy must be in (0, 1) and the counts > 0");
   }
+  if (settings_.threads < 1 || settings_.threads > kMaxThreads) {
+    throw std::invalid_argument("threads must be in [1, " + std::to_string(kMaxThreads) + "]");
+  }
+  pool_ = OwnedThreadPool(settings_.threads);
   if (!(settings_.sleep.time >= 0.0 && std::isfinite(settings_.sleep.time) &&
         settings_.sleep.tolerance >= 0.0 && std::isfinite(settings_.sleep.tolerance) &&
         settings_.sleep.bands >= 0.0 && std::isfinite(settings_.sleep.bands))) {
@@ -106,8 +116,10 @@ void World::detect() {
     // the broad phase treats sleeping bodies.
     placed_[i].asleep = !bodies_[i].fixed() && moving_[i] == 0;
   }
-  detected_ = pipeline_.detect(placed_);
+  const auto start = std::chrono::steady_clock::now();
+  detected_ = pipeline_.detect(placed_, pool_.get());
   detected_pairs_ = pipeline_.near_pairs();
+  profile_.detection += seconds_since(start);
 }
 
 double World::back_off(double dt_full) {
@@ -177,8 +189,10 @@ void World::resolve(const std::vector<ContactManifold>& manifolds, double time) 
   ++stats_.steps;
   if (any_crossing(manifolds)) ++stats_.crossings;
   stats_.islands_woken += sleep_.wake_touched(bodies_, manifolds, time);
+  const auto start = std::chrono::steady_clock::now();
   const ResolutionCounts counts = resolve_contacts(bodies_, manifolds, resolution, time,
                                                    settings_.record_events ? &events_ : nullptr);
+  profile_.resolution += seconds_since(start);
   stats_.collisions += counts.collisions;
   stats_.contacts += counts.contacts;
   stats_.passes += counts.passes;
@@ -343,6 +357,8 @@ double World::tunnel_free_step(double h) const {
 }
 
 void World::advance_to(double t) {
+  const auto start = std::chrono::steady_clock::now();
+  const double detection = profile_.detection, resolution = profile_.resolution;
   moving_.resize(bodies_.size(), 0);
   start_.resize(bodies_.size());
   while (time_ < t) {
@@ -360,6 +376,8 @@ void World::advance_to(double t) {
     stats_.islands_slept += sleep_.update(bodies_, manifolds_, near_pairs_, time_);
   }
   stats_.sim_time = time_;
+  profile_.stepping +=
+      seconds_since(start) - (profile_.detection - detection) - (profile_.resolution - resolution);
 }
 
 }  // namespace rugosim

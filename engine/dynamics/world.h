@@ -50,6 +50,7 @@
 #include <vector>
 
 #include "engine/collision/collision_pipeline.h"
+#include "engine/core/thread_pool.h"
 #include "engine/core/types.h"
 #include "engine/dynamics/event_record.h"
 #include "engine/dynamics/rigid_body.h"
@@ -79,6 +80,17 @@ struct WorldSettings {
   NarrowPhaseSettings narrow_phase;  // the segment-pair search (segment_distance.h)
   bool record_events = true;         // keep a ContactEvent per impulse (events())
   SleepSettings sleep;
+  // Threads for collision detection, the caller's included. Never changes a result: states,
+  // events and stats are the same, bit for bit, for any count (collision_pipeline.h).
+  int threads = 1;
+};
+
+// Where the World's time went (wall-clock seconds, summed since construction): for profiles and
+// benchmarks, never for results (it differs from run to run).
+struct StepProfile {
+  double detection = 0.0;   // s, broad and narrow phase of every trial state
+  double resolution = 0.0;  // s, impulses
+  double stepping = 0.0;    // s, everything else: step lengths, free flight, islands, sleeping
 };
 
 class World {
@@ -87,10 +99,11 @@ class World {
   static constexpr int kMaxConsecutiveFallbacks = 8;
   // Back-offs of one step at most before the rest of its move is accepted (see above).
   static constexpr int kMaxBackOffsPerStep = 32;
+  static constexpr int kMaxThreads = 256;
 
   // Throws std::invalid_argument on non-finite gravity, a negative friction gain, steps that
-  // are not 0 < min_step <= max_step, non-positive loop bounds, or narrow-phase settings out
-  // of range (relative accuracy in (0, 1), positive counts).
+  // are not 0 < min_step <= max_step, non-positive loop bounds, narrow-phase settings out of
+  // range (relative accuracy in (0, 1), positive counts) or threads outside [1, kMaxThreads].
   explicit World(WorldSettings settings = {});
 
   // Adds a body and returns its index (events and manifolds name bodies by it). The name is
@@ -114,6 +127,7 @@ class World {
   void advance_to(double t);
 
   const StepStats& stats() const { return stats_; }
+  const StepProfile& profile() const { return profile_; }
   // Every impulse since construction or the last clear_events(), in the order applied.
   const std::vector<ContactEvent>& events() const { return events_; }
   void clear_events() { events_.clear(); }
@@ -153,6 +167,7 @@ class World {
   std::vector<BodyState> start_;      // per body: a member's state at the sub-step's start
   std::vector<PlacedShape> placed_;
   CollisionPipeline pipeline_;
+  OwnedThreadPool pool_;
   std::vector<ContactManifold> detected_;   // copy of the latest detection
   std::vector<BodyPair> detected_pairs_;    // its broad-phase pairs
   std::vector<ContactManifold> accepted_;   // of the state back_off accepted
@@ -162,6 +177,7 @@ class World {
   std::vector<ContactEvent> events_;
   SleepTracker sleep_;
   StepStats stats_;
+  StepProfile profile_;
   double time_ = 0.0;  // s
   int consecutive_fallbacks_ = 0;
 };

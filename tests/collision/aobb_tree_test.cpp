@@ -256,6 +256,49 @@ TEST(AobbTree, QueryEqualsAllPairsLeafTest) {
   EXPECT_GT(total_pairs, 1500);
 }
 
+// With a slack the query finds every leaf pair that overlaps after B moved relative to A by at
+// most that much (in translation and turn together), and keeps the exact pairs' order.
+TEST(AobbTree, SlackQueryHoldsEveryPairAfterAMoveWithinTheSlack) {
+  Rng rng(26);
+  int moved_pairs = 0;
+  for (int c = 0; c < 200; ++c) {
+    const std::size_t na = testing::random_segment_count(rng, 2);
+    const Body a = random_body(rng, na);
+    Rng shape_rng(rng.next_u64());
+    Body b = random_body(shape_rng, testing::random_segment_count(rng, 2));
+    b = scaled(b, a.extent / b.extent * rng.uniform(0.3, 2.0));
+    const Transform2 before = random_relative_placement(rng, a, b, 1.3);
+    const double slack = 0.05 * a.extent * rng.uniform();
+    std::vector<LeafPair> candidates;
+    a.tree.query(b.tree, before, candidates, slack);
+    // The exact pairs, in the query's own order, are the candidates that overlap exactly.
+    std::vector<LeafPair> exact, filtered;
+    a.tree.query(b.tree, before, exact);
+    for (const LeafPair& p : candidates) {
+      if (obb_overlap(a.tree.leaf_box(p.segment_a),
+                      b.tree.leaf_box(p.segment_b).transformed(before))) {
+        filtered.push_back(p);
+      }
+    }
+    ASSERT_EQ(filtered, exact) << "case " << c;
+    // Move B by at most the slack: a turn about its origin and a shift, sharing the budget.
+    const double turn_share = rng.uniform();
+    const double turn = turn_share * slack / b.tree.reach();
+    const double angle = rng.uniform(0.0, 2.0 * std::numbers::pi);
+    const Vec2 shift = (1.0 - turn_share) * slack * Vec2(std::cos(angle), std::sin(angle));
+    // Turning by φ moves a point at distance r by 2r·sin(φ/2) <= r·φ.
+    const Transform2 after = Transform2(0.0, shift) * before * Transform2(turn, Vec2::Zero());
+    std::vector<LeafPair> now;
+    a.tree.query(b.tree, after, now);
+    for (const LeafPair& p : now) {
+      EXPECT_NE(std::find(candidates.begin(), candidates.end(), p), candidates.end())
+          << "case " << c << ": a pair overlapping after the move was not a candidate";
+    }
+    moved_pairs += static_cast<int>(now.size());
+  }
+  EXPECT_GT(moved_pairs, 500);
+}
+
 // Closed segments [p, q] and [r, s] cross or touch.
 bool edges_meet(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s) {
   const double d1 = cross(q - p, r - p), d2 = cross(q - p, s - p);

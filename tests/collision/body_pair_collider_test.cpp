@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <set>
 #include <utility>
@@ -11,6 +12,7 @@
 
 #include "engine/collision/collision_pipeline.h"
 #include "engine/core/random.h"
+#include "engine/core/thread_pool.h"
 #include "engine/geometry/orientation.h"
 #include "engine/geometry/shapes.h"
 
@@ -185,6 +187,64 @@ TEST(BodyPairCollider, EveryCrossingSegmentPairIsReported) {
   EXPECT_GE(crossings, 40u);  // the layouts do overlap
 }
 
+void expect_same_manifold(const ContactManifold& x, const ContactManifold& y, int step) {
+  ASSERT_EQ(x.intersections.size(), y.intersections.size()) << "step " << step;
+  for (std::size_t i = 0; i < x.intersections.size(); ++i) {
+    EXPECT_EQ(x.intersections[i].segment_a, y.intersections[i].segment_a) << "step " << step;
+    EXPECT_EQ(x.intersections[i].segment_b, y.intersections[i].segment_b);
+    EXPECT_EQ(x.intersections[i].point, y.intersections[i].point);
+  }
+  ASSERT_EQ(x.contacts.size(), y.contacts.size()) << "step " << step;
+  for (std::size_t i = 0; i < x.contacts.size(); ++i) {
+    EXPECT_EQ(x.contacts[i].segment_a, y.contacts[i].segment_a) << "step " << step;
+    EXPECT_EQ(x.contacts[i].segment_b, y.contacts[i].segment_b);
+    EXPECT_EQ(x.contacts[i].t_a, y.contacts[i].t_a);
+    EXPECT_EQ(x.contacts[i].t_b, y.contacts[i].t_b);
+    EXPECT_EQ(x.contacts[i].point, y.contacts[i].point);
+    EXPECT_EQ(x.contacts[i].normal, y.contacts[i].normal);
+  }
+}
+
+// The leaf-pair cache changes nothing: two rough blobs wandering in and out of contact (small
+// moves, as in a resting pile, and jumps past the cache's margin) give, with the cache, the
+// very manifolds of a fresh query at every step, while the trees are queried only now and then.
+TEST(BodyPairCollider, LeafPairCacheGivesTheSameManifoldsAsFreshQueries) {
+  const CollisionShape a = make_shape(blob_control_points(0.1, 0.4, 24, 11), 0.003);
+  const CollisionShape b = make_shape(blob_control_points(0.1, 0.4, 24, 12), 0.003);
+  Rng rng(31);
+  BodyPairCollider cached_collider, fresh_collider;
+  LeafPairCache cache;
+  ContactManifold with_cache, fresh;
+  double angle_b = 0.0;
+  Vec2 position_b(0.17, 0.02);
+  int touching = 0, queries = 0;
+  const Transform2 place_a(0.3, Vec2(0.0, 0.0));
+  for (int step = 0; step < 3000; ++step) {
+    if (rng.uniform() < 0.01) {
+      // A jump: somewhere else around A, near or apart.
+      angle_b = rng.uniform(0.0, 2.0 * std::numbers::pi);
+      const double bearing = rng.uniform(0.0, 2.0 * std::numbers::pi);
+      position_b = rng.uniform(0.12, 0.25) * Vec2(std::cos(bearing), std::sin(bearing));
+    } else {
+      angle_b += rng.uniform(-2e-3, 2e-3);
+      position_b += Vec2(rng.uniform(-2e-4, 2e-4), rng.uniform(-2e-4, 2e-4));
+    }
+    const Transform2 place_b(angle_b, position_b);
+    const std::vector<LeafPair> before = cache.candidates;
+    const Transform2 cached_at = cache.b_to_a;
+    cached_collider.collide(a, place_a, b, place_b, with_cache, &cache);
+    fresh_collider.collide(a, place_a, b, place_b, fresh);
+    queries +=
+        cache.candidates != before || cache.b_to_a.translation() != cached_at.translation() ? 1 : 0;
+    expect_same_manifold(with_cache, fresh, step);
+    EXPECT_EQ(cached_collider.last_leaf_pairs(), fresh_collider.last_leaf_pairs()) << step;
+    touching += fresh.state() != PairState::kSeparated ? 1 : 0;
+  }
+  RecordProperty("queries", std::to_string(queries));
+  EXPECT_GT(touching, 300);
+  EXPECT_LT(queries, 1500) << "the cache should spare most queries";
+}
+
 TEST(CollisionPipeline, FindsEveryTouchingPairOnceAndSkipsFixedPairs) {
   // Two fixed floors side by side touching each other, a disk resting across the joint region
   // and a far-away disk.
@@ -202,6 +262,47 @@ TEST(CollisionPipeline, FindsEveryTouchingPairOnceAndSkipsFixedPairs) {
   EXPECT_EQ(manifolds[0].state(), PairState::kContact);
   EXPECT_EQ(pipeline.counts().contacts, 1u);
   EXPECT_GE(pipeline.counts().leaf_pairs, 1u);
+}
+
+// A pool of threads changes nothing but the speed: a crowd of rough blobs, moved step after step,
+// gives the same manifolds (and counts) with 1, 2, 3 and 8 threads.
+TEST(CollisionPipeline, ThreadsGiveTheSameManifolds) {
+  std::vector<CollisionShape> shapes;
+  for (std::uint64_t i = 0; i < 40; ++i)
+    shapes.push_back(make_shape(blob_control_points(0.1, 0.4, 24, 100 + i), 0.003));
+  Rng rng(41);
+  std::vector<Transform2> places;
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    places.emplace_back(rng.uniform(0.0, 6.3),
+                        Vec2(0.17 * static_cast<double>(i % 8), 0.17 * static_cast<double>(i / 8)));
+  }
+  std::vector<CollisionPipeline> pipelines(4);
+  std::vector<std::unique_ptr<ThreadPool>> pools;
+  for (const int threads : {2, 3, 8})
+    pools.push_back(std::make_unique<ThreadPool>(threads));
+  int compared = 0;
+  for (int step = 0; step < 60; ++step) {
+    std::vector<PlacedShape> placed;
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+      places[i] =
+          Transform2(0.0, Vec2(rng.uniform(-2e-3, 2e-3), rng.uniform(-2e-3, 2e-3))) * places[i];
+      placed.push_back({&shapes[i], places[i], false, false});
+    }
+    const std::vector<ContactManifold> reference = pipelines[0].detect(placed);
+    for (std::size_t p = 0; p < pools.size(); ++p) {
+      const std::vector<ContactManifold>& threaded =
+          pipelines[p + 1].detect(placed, pools[p].get());
+      ASSERT_EQ(threaded.size(), reference.size()) << "step " << step;
+      for (std::size_t m = 0; m < reference.size(); ++m) {
+        EXPECT_EQ(threaded[m].body_a, reference[m].body_a);
+        EXPECT_EQ(threaded[m].body_b, reference[m].body_b);
+        expect_same_manifold(threaded[m], reference[m], step);
+      }
+      EXPECT_EQ(pipelines[p + 1].counts().leaf_pairs, pipelines[0].counts().leaf_pairs);
+      compared += static_cast<int>(reference.size());
+    }
+  }
+  EXPECT_GT(compared, 1000);
 }
 
 TEST(OutwardNormal, PointsOutOfACircleAndOffASharpCorner) {

@@ -1,0 +1,146 @@
+#include "engine/core/thread_pool.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <sched.h>
+#include <string>
+
+namespace rugosim {
+namespace {
+
+// How long a worker waiting for the next loop spins before it blocks: longer than the World's
+// work between two loops of a busy step, short enough not to hold a core that other threads (the
+// renderer's, the encoder's) could use.
+constexpr auto kSpinTime = std::chrono::microseconds(100);
+
+void relax() {
+#if defined(__x86_64__) || defined(__i386__)
+  __builtin_ia32_pause();
+#else
+  std::this_thread::yield();
+#endif
+}
+
+}  // namespace
+
+ThreadPool::ThreadPool(int threads) {
+  const int workers = std::max(threads, 1) - 1;
+  workers_.reserve(static_cast<std::size_t>(workers));
+  for (int i = 0; i < workers; ++i)
+    workers_.emplace_back([this, i] { worker_main(i + 1); });
+}
+
+ThreadPool::~ThreadPool() {
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    stopping_ = true;
+    generation_.fetch_add(1, std::memory_order_release);
+  }
+  wake_.notify_all();
+  for (std::thread& t : workers_)
+    t.join();
+}
+
+void ThreadPool::run_chunks(int thread) {
+  for (;;) {
+    const std::size_t begin = next_.fetch_add(grain_, std::memory_order_relaxed);
+    if (begin >= count_) return;
+    const std::size_t end = std::min(count_, begin + grain_);
+    try {
+      (*body_)(begin, end, thread);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (!error_) error_ = std::current_exception();
+    }
+  }
+}
+
+void ThreadPool::worker_main(int thread) {
+  std::uint64_t seen = 0;
+  for (;;) {
+    // Wait for a generation newer than the last one served: spin first, then block.
+    std::uint64_t now = generation_.load(std::memory_order_acquire);
+    const auto until = std::chrono::steady_clock::now() + kSpinTime;
+    for (int spin = 1; now == seen; ++spin) {
+      relax();
+      now = generation_.load(std::memory_order_acquire);
+      if (spin % 64 == 0 && std::chrono::steady_clock::now() > until) break;
+    }
+    if (now == seen) {
+      std::unique_lock<std::mutex> lock(mutex_);
+      wake_.wait(lock, [&] { return generation_.load(std::memory_order_acquire) != seen; });
+      now = generation_.load(std::memory_order_acquire);
+    }
+    seen = now;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      if (stopping_) return;
+    }
+    run_chunks(thread);
+    if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1) {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      done_.notify_one();
+    }
+  }
+}
+
+void ThreadPool::parallel_for(std::size_t count, std::size_t grain, const Body& body) {
+  if (count == 0) return;
+  grain = std::max<std::size_t>(grain, 1);
+  if (workers_.empty() || count <= grain) {
+    for (std::size_t begin = 0; begin < count; begin += grain)
+      body(begin, std::min(count, begin + grain), 0);
+    return;
+  }
+  {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    body_ = &body;
+    count_ = count;
+    grain_ = grain;
+    error_ = nullptr;
+    next_.store(0, std::memory_order_relaxed);
+    busy_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
+    generation_.fetch_add(1, std::memory_order_release);
+  }
+  wake_.notify_all();
+  run_chunks(0);
+  // Every worker leaves run_chunks only after the last chunk was taken; wait until all have.
+  const auto until = std::chrono::steady_clock::now() + kSpinTime;
+  for (int spin = 1; busy_.load(std::memory_order_acquire) != 0; ++spin) {
+    relax();
+    if (spin % 64 == 0 && std::chrono::steady_clock::now() > until) break;
+  }
+  std::exception_ptr error;
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return busy_.load(std::memory_order_acquire) == 0; });
+    error = error_;
+    body_ = nullptr;
+  }
+  if (error) std::rethrow_exception(error);
+}
+
+int available_cpus() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  int cpus = 0;
+  if (sched_getaffinity(0, sizeof(set), &set) == 0) cpus = CPU_COUNT(&set);
+  if (cpus <= 0) cpus = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  // cgroup v2: "max 100000" (no quota) or "<quota> <period>" in microseconds.
+  std::ifstream cpu_max("/sys/fs/cgroup/cpu.max");
+  std::string quota;
+  double period = 0.0;
+  if (cpu_max >> quota >> period && quota != "max" && period > 0.0) {
+    try {
+      const double share = std::stod(quota) / period;
+      if (share > 0.0) cpus = std::min(cpus, std::max(1, static_cast<int>(std::ceil(share))));
+    } catch (const std::exception&) {
+      // An unreadable quota limits nothing.
+    }
+  }
+  return std::max(cpus, 1);
+}
+
+}  // namespace rugosim
