@@ -46,6 +46,15 @@ bool falls_past_a_joint(const CubicSegment& seg_a, double t_a, const CubicSegmen
   return falls(seg_a.derivative(t_a), t_a, 1.0) || falls(seg_b.derivative(t_b), t_b, -1.0);
 }
 
+// m: how far any point within `reach` of B's origin has moved relative to A between the
+// placements `from` and `to` of B's frame in A's: ‖R₁ − R₀‖·reach + ‖t₁ − t₀‖, with
+// ‖R₁ − R₀‖ = √(Δcos² + Δsin²) for plane rotations.
+double relative_motion(const Transform2& from, const Transform2& to, double reach) {
+  const double dc = to.cos_angle() - from.cos_angle();
+  const double ds = to.sin_angle() - from.sin_angle();
+  return std::sqrt(dc * dc + ds * ds) * reach + (to.translation() - from.translation()).norm();
+}
+
 }  // namespace
 
 Vec2 outward_normal(const CubicSegment& segment, double t) {
@@ -93,33 +102,28 @@ void merge_duplicate_contacts(std::vector<Contact>& contacts, std::size_t segmen
 void BodyPairCollider::find_leaf_pairs(const CollisionShape& a, const CollisionShape& b,
                                        const Transform2& b_to_a, LeafPairCache* cache) {
   leaf_pairs_.clear();
+  leaf_apart_.clear();
   if (cache == nullptr) {
     a.tree().query(b.tree(), b_to_a, leaf_pairs_);
     return;
   }
-  // How far any point of B's boxes has moved relative to A since the candidates were found:
-  // ‖R₁ − R₀‖·reach + ‖t₁ − t₀‖, with ‖R₁ − R₀‖ = √(Δcos² + Δsin²) for plane rotations.
-  bool valid = cache->a == &a && cache->b == &b;
-  if (valid) {
-    const double dc = b_to_a.cos_angle() - cache->b_to_a.cos_angle();
-    const double ds = b_to_a.sin_angle() - cache->b_to_a.sin_angle();
-    const double moved = std::sqrt(dc * dc + ds * ds) * b.tree().reach() +
-                         (b_to_a.translation() - cache->b_to_a.translation()).norm();
-    valid = moved <= cache->margin;
-  }
-  if (!valid) {
+  if (cache->a != &a || cache->b != &b ||
+      relative_motion(cache->b_to_a, b_to_a, b.tree().reach()) > cache->margin) {
     cache->a = &a;
     cache->b = &b;
     cache->b_to_a = b_to_a;
     cache->margin = LeafPairCache::kMarginRelative * std::min(a.tree().reach(), b.tree().reach());
     cache->candidates.clear();
     a.tree().query(b.tree(), b_to_a, cache->candidates, cache->margin);
+    cache->apart.assign(cache->candidates.size(), LeafPairCache::Apart{});
   }
   // The query's own test at the leaves, in its order.
-  for (const LeafPair& pair : cache->candidates) {
+  for (std::size_t k = 0; k < cache->candidates.size(); ++k) {
+    const LeafPair& pair = cache->candidates[k];
     if (obb_overlap(a.tree().leaf_box(pair.segment_a),
                     b.tree().leaf_box(pair.segment_b).transformed(b_to_a))) {
       leaf_pairs_.push_back(pair);
+      leaf_apart_.push_back(&cache->apart[k]);
     }
   }
 }
@@ -135,16 +139,25 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
   const Transform2 b_to_a = place_a.inverse() * place_b;
   find_leaf_pairs(a, b, b_to_a, cache);
 
-  for (const LeafPair& pair : leaf_pairs_) {
+  for (std::size_t k = 0; k < leaf_pairs_.size(); ++k) {
+    const LeafPair& pair = leaf_pairs_[k];
+    LeafPairCache::Apart* apart = leaf_apart_.empty() ? nullptr : leaf_apart_[k];
+    if (apart != nullptr && apart->margin > 0.0 &&
+        relative_motion(apart->b_to_a, b_to_a, b.tree().reach()) < apart->margin) {
+      continue;  // still apart (see LeafPairCache::Apart)
+    }
     const CubicSegment& seg_a = a.curve().segment(pair.segment_a);
     const CubicSegment seg_b = b.curve().segment(pair.segment_b).transformed(b_to_a);
     // No contact of this pair can have a wider band than this: farther apart, it is separated,
     // and proving that is much cheaper than finding the nearest points exactly.
     const double widest_band = a.segment_band(pair.segment_a) + b.segment_band(pair.segment_b);
-    const std::optional<NearestPoints> within =
-        nearest_points_within(seg_a, seg_b, widest_band, settings_);
-    if (!within) continue;  // separated
-    const NearestPoints& near = *within;
+    const WithinThreshold within = nearest_points_within(seg_a, seg_b, widest_band, settings_);
+    if (apart != nullptr) {
+      const double margin = within.lower_bound - widest_band;
+      *apart = {b_to_a, margin > 0.0 ? margin : 0.0};
+    }
+    if (!within.nearest) continue;  // separated
+    const NearestPoints& near = *within.nearest;
     if (near.distance <= crossing_distance(seg_a, seg_b, settings_)) {
       if (const auto crossing = crossing_from(near, seg_a, seg_b, settings_)) {
         out.intersections.push_back({pair.segment_a, pair.segment_b, crossing->t_a, crossing->t_b,

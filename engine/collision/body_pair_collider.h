@@ -23,11 +23,21 @@ struct LeafPairCache {
   // fraction of a millimetre per step, so a 10 cm rock keeps its candidates for many steps.
   static constexpr double kMarginRelative = 0.02;
 
+  // A candidate proved apart: farther than the widest band its segments can have by `margin`
+  // when B was placed in A's frame by `b_to_a`. It stays apart while B moves relative to A by
+  // less than the margin, and needs no narrow phase until then (the answer would again be
+  // "separated").
+  struct Apart {
+    Transform2 b_to_a;
+    double margin = 0.0;  // m; 0: no proof
+  };
+
   const CollisionShape* a = nullptr;  // the shapes it was made for; null: nothing cached
   const CollisionShape* b = nullptr;
   Transform2 b_to_a;    // B's body frame in A's, when the candidates were found
   double margin = 0.0;  // m
   std::vector<LeafPair> candidates;
+  std::vector<Apart> apart;  // per candidate
 };
 
 class BodyPairCollider {
@@ -53,6 +63,7 @@ class BodyPairCollider {
                        LeafPairCache* cache);
 
   std::vector<LeafPair> leaf_pairs_;
+  std::vector<LeafPairCache::Apart*> leaf_apart_;  // per leaf pair, its proof in the cache
   std::vector<Contact> candidates_;
 };
 

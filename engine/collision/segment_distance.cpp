@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <tuple>
 #include <vector>
 
@@ -84,7 +85,9 @@ bool farther(const Cell& x, const Cell& y) {
 // Splits a rectangle in two or four. Only the parameter whose piece strays much further from
 // its chord is halved: halving a straight piece tightens no bound, and a concave piece facing
 // a straight one would otherwise breed a long row of rectangles along the straight one.
-void push_children(const Cell& cell, double cutoff, std::vector<Cell>& heap) {
+// The smallest bound of the children dropped goes to *dropped_min when given.
+void push_children(const Cell& cell, double cutoff, std::vector<Cell>& heap,
+                   double* dropped_min = nullptr) {
   const bool split_s = cell.deviation_a >= 0.25 * cell.deviation_b;
   const bool split_t = cell.deviation_b >= 0.25 * cell.deviation_a;
   std::array<BezierPolygon, 2> a_part{cell.pa, cell.pa}, b_part{cell.pb, cell.pb};
@@ -111,7 +114,10 @@ void push_children(const Cell& cell, double cutoff, std::vector<Cell>& heap) {
       child.deviation_b = b_dev[j];
       child.chords = closest_on_chords(child.pa[0], child.pa[3], child.pb[0], child.pb[3]).distance;
       child.lower = std::max(0.0, child.chords - a_dev[i] - b_dev[j]);
-      if (child.lower >= cutoff) continue;
+      if (child.lower >= cutoff) {
+        if (dropped_min != nullptr) *dropped_min = std::min(*dropped_min, child.lower);
+        continue;
+      }
       child.box = {s_cut[i], s_cut[i + 1], t_cut[j], t_cut[j + 1]};
       child.depth = cell.depth + 1;
       heap.push_back(child);
@@ -186,16 +192,19 @@ Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const T
   return best;
 }
 
-// The decision form of step 4: whether every pair of points is farther apart than `level`,
-// proved by the same bounds (a rectangle is dropped once its chord bound or its certificate
-// exceeds the level). False as soon as a pair at most `level` apart turns up, or when the search
-// runs out of depth or rectangles before it could prove it.
-bool proves_farther_than(const CubicSegment& a, const CubicSegment& b, const Tolerances& tol,
-                         const NarrowPhaseSettings& settings, double level) {
+// The decision form of step 4: a proof that every pair of points is farther apart than `level`,
+// by the same bounds (a rectangle is dropped once its chord bound or its certificate exceeds the
+// level). Its value is the smallest bound of the rectangles dropped, a lower bound of the
+// distance above the level. Nothing as soon as a pair at most `level` apart turns up, or when
+// the search runs out of depth or rectangles before it could prove it.
+std::optional<double> proves_farther_than(const CubicSegment& a, const CubicSegment& b,
+                                          const Tolerances& tol,
+                                          const NarrowPhaseSettings& settings, double level) {
   const int cell_iterations = std::min(kCellIterations, settings.seed_iterations);
   // push_children drops children whose bound is at least its cutoff; here only those strictly
   // above the level may go.
   const double cutoff = std::nextafter(level, std::numeric_limits<double>::infinity());
+  double lowest = std::numeric_limits<double>::infinity();
   std::vector<Cell> heap;
   heap.reserve(64);
   Cell root;
@@ -203,9 +212,9 @@ bool proves_farther_than(const CubicSegment& a, const CubicSegment& b, const Tol
   root.pb = b.bezier();
   root.deviation_a = chord_deviation(root.pa);
   root.deviation_b = chord_deviation(root.pb);
-  push_children(root, cutoff, heap);
+  push_children(root, cutoff, heap, &lowest);
   for (int examined = 0; !heap.empty(); ++examined) {
-    if (examined >= settings.max_cells) return false;
+    if (examined >= settings.max_cells) return std::nullopt;
     std::pop_heap(heap.begin(), heap.end(), farther);
     const Cell cell = heap.back();
     heap.pop_back();
@@ -214,16 +223,22 @@ bool proves_farther_than(const CubicSegment& a, const CubicSegment& b, const Tol
     const double s = box.s0 + seed.u * (box.s1 - box.s0);
     const double t = box.t0 + seed.v * (box.t1 - box.t0);
     const LocalMinimum at_seed{s, t, (a.point(s) - b.point(t)).squaredNorm()};
-    if (std::sqrt(at_seed.distance2) <= level) return false;
-    if (certified_bound(a, b, box, at_seed, level) > level) continue;
+    if (std::sqrt(at_seed.distance2) <= level) return std::nullopt;
+    if (const double bound = certified_bound(a, b, box, at_seed, level); bound > level) {
+      lowest = std::min(lowest, bound);
+      continue;
+    }
     const LocalMinimum m =
         descend_to_local_minimum(a, b, box, s, t, tol.zero * tol.zero, cell_iterations);
-    if (std::sqrt(m.distance2) <= level) return false;
-    if (certified_bound(a, b, box, m, level) > level) continue;
-    if (cell.depth >= settings.max_depth) return false;
-    push_children(cell, cutoff, heap);
+    if (std::sqrt(m.distance2) <= level) return std::nullopt;
+    if (const double bound = certified_bound(a, b, box, m, level); bound > level) {
+      lowest = std::min(lowest, bound);
+      continue;
+    }
+    if (cell.depth >= settings.max_depth) return std::nullopt;
+    push_children(cell, cutoff, heap, &lowest);
   }
-  return true;
+  return lowest;
 }
 }  // namespace
 
@@ -237,26 +252,36 @@ double crossing_distance(const CubicSegment& a, const CubicSegment& b,
   return tolerances(a, b, settings).zero;
 }
 
-std::optional<NearestPoints> nearest_points_within(const CubicSegment& a, const CubicSegment& b,
-                                                   double threshold,
-                                                   const NarrowPhaseSettings& settings) {
+WithinThreshold nearest_points_within(const CubicSegment& a, const CubicSegment& b,
+                                      double threshold, const NarrowPhaseSettings& settings) {
   const Tolerances tol = tolerances(a, b, settings);
   const auto& pa = a.bezier();
   const auto& pb = b.bezier();
   const ParameterBox unit;
   // A proof of "farther than the threshold" must hold whatever the rounding of the distance a
   // full search would compute, so it clears the threshold by the accuracy; and touching pairs
-  // (crossing_distance) are never proved apart.
+  // (crossing_distance) are never proved apart. Bounds are reported less the accuracy, which
+  // covers their own rounding.
   const double proof_level = std::max(threshold, tol.zero) + tol.accuracy;
   const bool may_prove = std::isfinite(threshold);
+  WithinThreshold out;
+  // Whether m is the global minimum: touching, or a certificate within the accuracy of it.
   const auto settled = [&](const LocalMinimum& m) {
     const double d = std::sqrt(m.distance2);
-    return d <= tol.zero || certified_bound(a, b, unit, m, d - tol.accuracy) >= d - tol.accuracy;
+    if (d <= tol.zero) return true;
+    const double bound = certified_bound(a, b, unit, m, d - tol.accuracy);
+    if (bound < d - tol.accuracy) return false;
+    out.lower_bound = bound - tol.accuracy;
+    return true;
   };
   const ChordPair seed = closest_on_chords(pa[0], pa[3], pb[0], pb[3]);
   // The cheapest proof: the chord bound of the whole square.
-  if (may_prove && seed.distance - chord_deviation(pa) - chord_deviation(pb) > proof_level) {
-    return std::nullopt;
+  if (may_prove) {
+    const double chord_bound = seed.distance - chord_deviation(pa) - chord_deviation(pb);
+    if (chord_bound > proof_level) {
+      out.lower_bound = chord_bound - tol.accuracy;
+      return out;
+    }
   }
   LocalMinimum m = descend_to_local_minimum(a, b, unit, seed.u, seed.v, tol.zero * tol.zero,
                                             settings.seed_iterations);
@@ -277,24 +302,27 @@ std::optional<NearestPoints> nearest_points_within(const CubicSegment& a, const 
   if (!done) {
     // Proving that nothing comes within the threshold is far cheaper than pinning down the
     // minimum of a pair that is well apart (a concave piece facing a convex one): try it first.
-    if (may_prove && best.distance > proof_level &&
-        proves_farther_than(a, b, tol, settings, proof_level)) {
-      return std::nullopt;
+    if (may_prove && best.distance > proof_level) {
+      if (const std::optional<double> bound =
+              proves_farther_than(a, b, tol, settings, proof_level)) {
+        out.lower_bound = *bound - tol.accuracy;
+        return out;
+      }
     }
     best = branch_and_bound(a, b, tol, settings, best);
   }
-  NearestPoints out;
-  out.t_a = best.s;
-  out.t_b = best.t;
-  out.point_a = a.point(best.s);
-  out.point_b = b.point(best.t);
-  out.distance = (out.point_a - out.point_b).norm();
+  NearestPoints& nearest = out.nearest.emplace();
+  nearest.t_a = best.s;
+  nearest.t_b = best.t;
+  nearest.point_a = a.point(best.s);
+  nearest.point_b = b.point(best.t);
+  nearest.distance = (nearest.point_a - nearest.point_b).norm();
   return out;
 }
 
 NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b,
                              const NarrowPhaseSettings& settings) {
-  return *nearest_points_within(a, b, std::numeric_limits<double>::infinity(), settings);
+  return *nearest_points_within(a, b, std::numeric_limits<double>::infinity(), settings).nearest;
 }
 
 }  // namespace rugosim

@@ -37,6 +37,7 @@
 // (segment_crossing.h) reports exactly those pairs.
 #pragma once
 
+#include <limits>
 #include <optional>
 
 #include "engine/core/types.h"
@@ -73,16 +74,28 @@ struct NearestPoints {
 NearestPoints nearest_points(const CubicSegment& a, const CubicSegment& b,
                              const NarrowPhaseSettings& settings = {});
 
+// What nearest_points_within found.
+struct WithinThreshold {
+  // nearest_points' own answer, bit for bit, unless the pair was proved farther apart than the
+  // threshold.
+  std::optional<NearestPoints> nearest;
+  // m: a proved lower bound of the distance between the segments, or −infinity when none was
+  // proved (a search that had to give its best pair without a certificate). Above the threshold
+  // when `nearest` is empty; within twice the accuracy below the distance when the nearest
+  // points were certified.
+  double lower_bound = -std::numeric_limits<double>::infinity();
+};
+
 // The same, for a caller that needs the nearest points only of pairs that come within
 // `threshold` (m) of each other (the collision layer: a pair farther apart than its tolerance
-// band is simply separated): nullopt once it has proved that every pair of points is farther
-// apart than max(threshold, crossing_distance()) + nearest_points_accuracy(), which for a pair well
-// apart takes a few bounds where pinning down the exact minimum can take a long search. Whenever it
-// returns a value, that value is exactly nearest_points(a, b, settings), bit for bit; it may also
-// return one for a pair farther apart than the threshold, when no proof came cheaply.
-std::optional<NearestPoints> nearest_points_within(const CubicSegment& a, const CubicSegment& b,
-                                                   double threshold,
-                                                   const NarrowPhaseSettings& settings = {});
+// band is simply separated): no nearest points once it has proved that every pair of points is
+// farther apart than max(threshold, crossing_distance()) + nearest_points_accuracy(), which for a
+// pair well apart takes a few bounds where pinning down the exact minimum can take a long
+// search. It may also give them for a pair farther apart than the threshold, when they came
+// cheaper than a proof. The lower bound lets a caller keep the answer while the segments move
+// by less than its margin.
+WithinThreshold nearest_points_within(const CubicSegment& a, const CubicSegment& b,
+                                      double threshold, const NarrowPhaseSettings& settings = {});
 
 // How far above the true minimum nearest_points() may be, m: relative_accuracy of the larger
 // segment's hull diagonal plus 64 roundings of the largest coordinate sum (evaluations far

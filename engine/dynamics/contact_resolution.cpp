@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "engine/dynamics/collision_impulse.h"
 #include "engine/dynamics/contact_plan.h"
@@ -14,6 +15,13 @@ namespace {
 struct ContactRef {
   std::size_t manifold = 0;
   std::size_t contact = 0;
+};
+
+// A contact's plan and the versions of its bodies' velocities it was made from (0: none yet).
+struct PlanCache {
+  ContactPlan plan;
+  std::uint64_t version_a = 0;
+  std::uint64_t version_b = 0;
 };
 
 void write_velocity(RigidBody& body, const Vec2& impulse, const Vec2& arm, double sign) {
@@ -38,13 +46,29 @@ ResolutionCounts resolve_contacts(std::span<RigidBody> bodies,
   }
   if (refs.empty()) return counts;
 
+  // A plan depends on the contact and on its two bodies' velocities only, and most impulses of a
+  // pass leave most bodies alone: each body's velocities carry a version, and a contact is
+  // planned again only when a version of its bodies moved on since (the same plan, bit for bit,
+  // as planning it afresh).
+  std::vector<std::uint64_t> version(bodies.size(), 1);
+  std::vector<PlanCache> plans(refs.size());
+  const auto plan = [&](std::size_t i) -> const ContactPlan& {
+    const ContactManifold& m = manifolds[refs[i].manifold];
+    PlanCache& cache = plans[i];
+    if (cache.version_a != version[m.body_a] || cache.version_b != version[m.body_b]) {
+      cache.plan =
+          plan_contact(bodies[m.body_a], bodies[m.body_b], m.contacts[refs[i].contact], settings);
+      cache.version_a = version[m.body_a];
+      cache.version_b = version[m.body_b];
+    }
+    return cache.plan;
+  };
+
   std::vector<PendingContact> order;
   for (int pass = 0; pass < settings.max_passes; ++pass) {
     order.clear();
     for (std::size_t i = 0; i < refs.size(); ++i) {
-      const ContactManifold& m = manifolds[refs[i].manifold];
-      const ContactPlan p =
-          plan_contact(bodies[m.body_a], bodies[m.body_b], m.contacts[refs[i].contact], settings);
+      const ContactPlan& p = plan(i);
       if (p.approaching) order.push_back({p.vn_target, i});
     }
     if (order.empty()) return counts;
@@ -58,18 +82,21 @@ ResolutionCounts resolve_contacts(std::span<RigidBody> bodies,
       RigidBody& a = bodies[m.body_a];
       RigidBody& b = bodies[m.body_b];
       // Earlier impulses of this pass may have changed these velocities.
-      const ContactPlan p = plan_contact(a, b, c, settings);
+      const ContactPlan& p = plan(candidate.index);
       if (!p.approaching) continue;
       const ImpulseResult r = collision_impulse(p.a, p.b, c.normal, p.restitution, p.mu);
       if (!r.collision) continue;  // degenerate: nothing can change v_n here
       write_velocity(a, r.impulse, p.a.arm, 1.0);
       write_velocity(b, r.impulse, p.b.arm, -1.0);
+      if (!a.fixed()) ++version[m.body_a];
+      if (!b.fixed()) ++version[m.body_b];
       ++applied;
       if (p.micro) {
         ++counts.contacts;
       } else {
         ++counts.collisions;
       }
+      // p is still this contact's plan from before the impulse: only plan() replaces it.
       if (events != nullptr) events->push_back(make_event(a, b, m, c, p, r, time));
     }
     if (applied == 0) return counts;

@@ -437,7 +437,13 @@ TEST(NearestPointsWithin, AgreesWithNearestPointsAndProvesOnlyTrueSeparations) {
       const double slack = 1e-9 * size + 1e-14 * pair_magnitude(a, b);
       for (const double ratio : {0.0, 0.5, 0.9, 0.999, 1.001, 1.1, 2.0}) {
         const double threshold = ratio * reference;
-        const std::optional<NearestPoints> within = nearest_points_within(a, b, threshold);
+        const WithinThreshold result = nearest_points_within(a, b, threshold);
+        const std::optional<NearestPoints>& within = result.nearest;
+        // The lower bound is one, and within the certificate's slack of a certified answer.
+        EXPECT_LE(result.lower_bound, reference + slack);
+        if (within && std::isfinite(result.lower_bound)) {
+          EXPECT_GE(result.lower_bound, within->distance - slack);
+        }
         const bool apart = ratio <= 0.5 && reference > 1e-6 * size;
         well_apart += apart ? 1 : 0;
         if (within) {
@@ -448,6 +454,7 @@ TEST(NearestPointsWithin, AgreesWithNearestPointsAndProvesOnlyTrueSeparations) {
           proved_well_apart += apart ? 1 : 0;
           EXPECT_GT(reference + slack, threshold)
               << testing::pair_kind_name(kind) << " case " << c << " ratio " << ratio;
+          EXPECT_GT(result.lower_bound, threshold);
           // Touching pairs are never proved apart, whatever the threshold.
           EXPECT_GT(full.distance, crossing_distance(a, b));
         }
@@ -464,7 +471,8 @@ TEST(NearestPointsWithin, InfiniteThresholdIsTheFullSearch) {
   Rng rng(99);
   for (int c = 0; c < 200; ++c) {
     const auto [a, b] = testing::random_segment_pair(rng, static_cast<PairKind>(c % 7));
-    const auto within = nearest_points_within(a, b, std::numeric_limits<double>::infinity());
+    const auto within =
+        nearest_points_within(a, b, std::numeric_limits<double>::infinity()).nearest;
     ASSERT_TRUE(within.has_value());
     EXPECT_EQ(within->distance, nearest_points(a, b).distance);
   }
