@@ -62,6 +62,9 @@ class SleepTracker {
   // Grows the per-body records to `bodies` (new bodies start awake, anchored where they are).
   void track(std::span<const RigidBody> bodies, double time);
 
+  // s: world time of the next check (update() judges the bodies at the first call at or after it).
+  double next_check() const { return next_check_; }
+
   bool asleep(std::size_t body) const { return body < asleep_.size() && asleep_[body] != 0; }
   std::size_t asleep_count() const;
   // True when some body that is neither fixed nor asleep exists: otherwise nothing can move.

@@ -314,46 +314,40 @@ void World::step(double h) {
   });
 }
 
-double World::tunnel_free_step(double h) const {
-  const double g = settings_.gravity.norm();
-  auto moves = [&](std::size_t i) { return !bodies_[i].fixed() && !sleep_.asleep(i); };
-  double thinnest = std::numeric_limits<double>::infinity();
-  double fastest = 0.0;
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    thinnest = std::min(thinnest, bodies_[i].thickness());
-    if (moves(i)) fastest = std::max(fastest, bodies_[i].boundary_speed());
-  }
-  // Every pair together moves at most twice the fastest body's reach.
-  if (2.0 * (fastest * h + 0.5 * g * h * h) <= 0.5 * thinnest) return h;
-  std::vector<Aabb> boxes;
-  boxes.reserve(bodies_.size());
-  for (const RigidBody& b : bodies_)
-    boxes.push_back(b.shape().world_bounds(b.placement()));
-  double safe = h;
-  for (std::size_t i = 0; i < bodies_.size(); ++i) {
-    if (!moves(i)) continue;  // a pair is seen from a body that moves
-    const double si = bodies_[i].boundary_speed();
-    for (std::size_t j = 0; j < bodies_.size(); ++j) {
-      if (j == i || (moves(j) && j < i)) continue;  // a pair of movers is seen once
-      const bool j_moves = moves(j);
-      // Relative motion: speeds add, and gravity moves both alike when both move.
-      const double a = si + (j_moves ? bodies_[j].boundary_speed() : 0.0);
-      const double b = j_moves ? 0.0 : 0.5 * g;
-      const double reach = a * h + b * h * h;
-      const double limit = 0.5 * std::min(bodies_[i].thickness(), bodies_[j].thickness());
-      if (reach <= limit) continue;
-      Aabb grown = boxes[i];
-      grown.min -= Vec2::Constant(reach);
-      grown.max += Vec2::Constant(reach);
-      if (!grown.overlaps(boxes[j])) continue;
-      // The largest dt with a·dt + b·dt² <= limit.
-      const double dt =
-          b > 0.0 ? 2.0 * limit / (a + std::sqrt(a * a + 4.0 * b * limit)) : limit / a;
-      safe = std::min(safe, dt);
+bool World::near_anything() const {
+  return std::any_of(near_pairs_.begin(), near_pairs_.end(), [&](const BodyPair& p) {
+    const auto moves = [&](std::size_t i) { return !bodies_[i].fixed() && !sleep_.asleep(i); };
+    return moves(p.a) || moves(p.b);
+  });
+}
+
+double World::next_step(double remaining) {
+  awake_.resize(bodies_.size());
+  for (std::size_t i = 0; i < bodies_.size(); ++i)
+    awake_[i] = !bodies_[i].fixed() && !sleep_.asleep(i) ? 1 : 0;
+  // Apart, a step runs as far as nothing can meet: to the target time, or else to the furthest
+  // point of the grid of max_step steps from the last target that halving finds (so that near
+  // contact the steps fall where they always did).
+  if (remaining > settings_.max_step && !near_anything()) {
+    // A step ends at the first point of the grid past the next sleep check, as short steps would,
+    // so that resting bodies are judged as often.
+    double limit = remaining;
+    const double until_check = sleep_.next_check() - time_;
+    if (settings_.sleep.enabled && until_check < remaining) {
+      const double grid_steps = std::max(1.0, std::ceil(until_check / settings_.max_step));
+      limit = std::min(remaining, grid_steps * settings_.max_step);
+    }
+    const double steps = std::floor(limit / settings_.max_step);
+    for (double k = steps; k >= 2.0; k = std::floor(0.5 * k)) {
+      const double h = k == steps ? limit : k * settings_.max_step;
+      if (planner_.nothing_can_meet(bodies_, awake_, settings_.gravity, h)) {
+        ++stats_.free_steps;
+        return h;
+      }
     }
   }
-  // Never below min_step (speeds beyond that are refused by the scene layer), never above h.
-  return std::min(h, std::max(safe, settings_.min_step));
+  return planner_.tunnel_free(bodies_, awake_, settings_.gravity,
+                              std::min(settings_.max_step, remaining), settings_.min_step);
 }
 
 void World::advance_to(double t) {
@@ -369,7 +363,7 @@ void World::advance_to(double t) {
       break;
     }
     const double remaining = t - time_;
-    const double h = tunnel_free_step(std::min(settings_.max_step, remaining));
+    const double h = next_step(remaining);
     step(h);
     // Land exactly on t rather than a rounding short of it.
     time_ = h == remaining ? t : time_ + h;

@@ -55,6 +55,7 @@
 #include "engine/dynamics/event_record.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/dynamics/sleep_tracker.h"
+#include "engine/dynamics/step_planner.h"
 #include "engine/dynamics/step_stats.h"
 
 namespace rugosim {
@@ -145,9 +146,11 @@ class World {
   // Runs detection on the current placement, every non-member held still; result in
   // detected_ and detected_pairs_.
   void detect();
-  // The longest step, at most h (s), in which no pair of bodies can tunnel (see above; never
-  // below min_step).
-  double tunnel_free_step(double h) const;
+  // Whether the last state had a near pair (boxes with bands overlapping) with an awake mover.
+  bool near_anything() const;
+  // The next step's length, at most `remaining` (s): all of it while nothing can meet, else
+  // max_step cut so that nothing can tunnel (step_planner.h; never below min_step).
+  double next_step(double remaining);
   // One step of exactly h (s) for every awake movable body (islands that cross back off alone).
   void step(double h);
   // Advances the members, whose full move to h (s after time_) was found to cross, by
@@ -167,6 +170,8 @@ class World {
   std::vector<BodyState> start_;      // per body: a member's state at the sub-step's start
   std::vector<PlacedShape> placed_;
   CollisionPipeline pipeline_;
+  StepPlanner planner_;
+  std::vector<std::uint8_t> awake_;  // per body: 1 when neither fixed nor asleep (next_step)
   OwnedThreadPool pool_;
   std::vector<ContactManifold> detected_;   // copy of the latest detection
   std::vector<BodyPair> detected_pairs_;    // its broad-phase pairs

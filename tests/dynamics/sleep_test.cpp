@@ -82,7 +82,8 @@ TEST(Sleep, DriftSleepsOnlyBelowTheTolerance) {
   world.add_body(disk(0.2, 32, Vec2::Zero(), Vec2(1e-3, 0.0), make_material(0.3, 0.5)));
   world.advance_to(2.0);
   EXPECT_FALSE(world.asleep(0));
-  EXPECT_GE(world.stats().steps, 2000u);
+  EXPECT_EQ(world.stats().idle_jumps, 0u);  // it keeps stepping (in long steps: nothing is near)
+  EXPECT_GT(world.stats().steps, 0u);
 }
 
 // A movable w x h box (sharp corners, 32 segments) centred at `centre`, σ = 1 mm.
