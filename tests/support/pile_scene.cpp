@@ -47,14 +47,16 @@ std::vector<PileBody> pile_scene(const PileSpec& spec) {
   const double wall_height = static_cast<double>(rows + 2) * pitch;
 
   std::vector<PileBody> scene;
+  const Vec2 floor_size(width + 2.0 * thickness, thickness);
+  const Vec2 wall_size(thickness, wall_height);
+  scene.push_back({wall(spec, floor_size.x(), floor_size.y(), Vec2(0.0, -0.5 * thickness)), "floor",
+                   floor_size});
+  scene.push_back({wall(spec, wall_size.x(), wall_size.y(),
+                        Vec2(-0.5 * (width + thickness), 0.5 * wall_height)),
+                   "left_wall", wall_size});
   scene.push_back(
-      {wall(spec, width + 2.0 * thickness, thickness, Vec2(0.0, -0.5 * thickness)), "floor"});
-  scene.push_back(
-      {wall(spec, thickness, wall_height, Vec2(-0.5 * (width + thickness), 0.5 * wall_height)),
-       "left_wall"});
-  scene.push_back(
-      {wall(spec, thickness, wall_height, Vec2(0.5 * (width + thickness), 0.5 * wall_height)),
-       "right_wall"});
+      {wall(spec, wall_size.x(), wall_size.y(), Vec2(0.5 * (width + thickness), 0.5 * wall_height)),
+       "right_wall", wall_size});
 
   Rng rng(spec.seed);
   for (std::size_t i = 0; i < spec.bodies; ++i) {
@@ -74,7 +76,7 @@ std::vector<PileBody> pile_scene(const PileSpec& spec) {
     desc.angle = rng.uniform(0.0, 2.0 * std::numbers::pi);
     desc.velocity = Vec2(rng.uniform(-0.5, 0.5), rng.uniform(-0.5, 0.0));
     desc.angular_velocity = rng.uniform(-2.0, 2.0);
-    scene.push_back({desc, "body_" + std::to_string(i)});
+    scene.push_back({desc, "body_" + std::to_string(i), Vec2::Zero()});
   }
   return scene;
 }

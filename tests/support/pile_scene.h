@@ -29,6 +29,7 @@ struct PileSpec {
 struct PileBody {
   RigidBodyDesc desc;
   std::string name;
+  Vec2 box_size = Vec2::Zero();  // m: a wall's width and height (zero for a falling body)
 };
 
 // Columns of the grid: about twice as many rows as columns, like a hopper.
