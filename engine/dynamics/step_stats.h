@@ -33,6 +33,9 @@ struct StepStats {
   std::uint64_t idle_jumps = 0;
   // Steps taken whole to the target time because no two bodies could meet in them.
   std::uint64_t free_steps = 0;
+  // Awake movable bodies summed over the steps: the work a step's cost grows with (wall time
+  // per body-step compares scenes of different sizes).
+  std::uint64_t body_steps = 0;
   double sim_time = 0.0;  // s simulated
 };
 

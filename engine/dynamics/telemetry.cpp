@@ -98,6 +98,8 @@ std::string stats_json(const StepStats& s, double wall_time, const Accuracy* acc
   counter("islands_slept", s.islands_slept);
   counter("islands_woken", s.islands_woken);
   counter("idle_jumps", s.idle_jumps);
+  counter("free_steps", s.free_steps);
+  counter("body_steps", s.body_steps);
   out.append("  \"sim_time\": ");
   append_number(out, s.sim_time);
   out.append(",\n  \"wall_time\": ");

@@ -247,6 +247,7 @@ void World::step(double h) {
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     if (!bodies_[i].fixed() && !sleep_.asleep(i)) movers.push_back(i);
   }
+  stats_.body_steps += movers.size();
   set_members(std::move(movers));
   save_start();
   place_at(h);

@@ -85,9 +85,11 @@ std::vector<RigidBodyDesc> body_descriptions(const Scene& scene) {
   return descs;
 }
 
-SceneWorld build_world(const Scene& scene, const std::string& file) {
+SceneWorld build_world(const Scene& scene, const std::string& file, int threads) {
   SceneWorld out;
-  auto world = std::make_unique<World>(world_settings(scene));
+  WorldSettings settings = world_settings(scene);
+  settings.threads = threads;
+  auto world = std::make_unique<World>(settings);
   const std::vector<RigidBodyDesc> descs = body_descriptions(scene);
   for (std::size_t i = 0; i < descs.size(); ++i) {
     try {

@@ -30,8 +30,9 @@ struct SceneWorld {
   std::vector<SceneError> errors;  // file from `file`, paths /bodies/i/...
 };
 
-// Builds the World; every body that cannot be built and every pair crossing at t = 0 is
-// reported.
-SceneWorld build_world(const Scene& scene, const std::string& file);
+// Builds the World, with `threads` threads of collision detection (WorldSettings::threads: a
+// setting of the run, not of the scene, since it never changes a result); every body that
+// cannot be built and every pair crossing at t = 0 is reported.
+SceneWorld build_world(const Scene& scene, const std::string& file, int threads = 1);
 
 }  // namespace rugosim

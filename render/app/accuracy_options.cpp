@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/dynamics/accuracy.h"
+#include "engine/dynamics/world.h"
 
 namespace rugosim::app {
 
@@ -39,6 +40,15 @@ void add_accuracy_options(CLI::App& command, AccuracyOverride& out) {
         ->check(in_range)
         ->type_name(knob.integer ? "N" : "X");
   }
+}
+
+void add_threads_option(CLI::App& command, int& threads) {
+  command
+      .add_option("--threads", threads,
+                  "threads for collision detection (default: the CPUs this process may use, " +
+                      std::to_string(threads) + " here); results do not depend on it")
+      ->check(CLI::Range(1, World::kMaxThreads))
+      ->type_name("N");
 }
 
 }  // namespace rugosim::app

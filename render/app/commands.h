@@ -22,6 +22,7 @@ struct SimulateOptions {
   std::optional<double> duration;  // s, overrides world.duration
   std::optional<double> fps;       // overrides render.fps: the trajectory's frame rate
   AccuracyOverride accuracy;
+  int threads = 1;              // of collision detection (--threads)
   std::string trajectory_path;  // empty: not written
   std::string events_path;
   std::string stats_path;
@@ -40,6 +41,7 @@ struct RenderOptions {
   std::optional<double> fps;
   std::optional<double> duration;
   AccuracyOverride accuracy;
+  int threads = 1;  // of collision detection (--threads)
   int crf = 18;
   std::string preset = "medium";
   bool overwrite = false;  // -y
@@ -73,6 +75,7 @@ struct SnapshotOptions {
   std::string backend = "osmesa";
   std::string anti_aliasing = "shader";
   AccuracyOverride accuracy;
+  int threads = 1;  // of collision detection (--threads)
 };
 
 // Renders frames of a scene and compares them with golden PNGs (INTERFACE.md, `snapshot`), or

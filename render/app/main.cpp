@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include "engine/core/thread_pool.h"
 #include "engine/core/version.h"
 #include "render/app/accuracy_options.h"
 #include "render/app/commands.h"
@@ -39,6 +40,9 @@ int main(int argc, char** argv) {
   simulate->add_option("--fps", fps, "trajectory frames per second (default: render.fps)")
       ->check(CLI::PositiveNumber);
   add_accuracy_options(*simulate, sim.accuracy);
+  const int cpus = rugosim::available_cpus();
+  sim.threads = cpus;
+  add_threads_option(*simulate, sim.threads);
   simulate->add_option("--trajectory", sim.trajectory_path, "write trajectory.csv here");
   simulate->add_option("--events", sim.events_path, "write events.csv (one row per impulse)");
   simulate->add_option("--stats", sim.stats_path, "write stats.json (step statistics)");
@@ -74,6 +78,8 @@ int main(int argc, char** argv) {
   render->add_option("--duration", render_duration, "simulated time, s (default: world.duration)")
       ->check(CLI::PositiveNumber);
   add_accuracy_options(*render, render_options.accuracy);
+  render_options.threads = cpus;
+  add_threads_option(*render, render_options.threads);
   render->add_option("--crf", render_options.crf, "MP4: x264 constant rate factor 0..51")
       ->capture_default_str();
   render->add_option("--preset", render_options.preset, "MP4: x264 preset")->capture_default_str();
@@ -158,6 +164,8 @@ int main(int argc, char** argv) {
   snapshot->add_option("--aa", snap.anti_aliasing, "anti-aliasing: shader, msaa or none")
       ->capture_default_str();
   add_accuracy_options(*snapshot, snap.accuracy);
+  snap.threads = cpus;
+  add_threads_option(*snapshot, snap.threads);
   snapshot->footer(
       "Examples:\n"
       "  rugosim snapshot scenes/figure12a.json --golden tests/goldens --size 320x180 --update\n"

@@ -201,7 +201,7 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
 }  // namespace
 
 int run_render(const RenderOptions& o) {
-  std::optional<LoadedScene> loaded = load_scene_or_report(o.scene_path, o.accuracy);
+  std::optional<LoadedScene> loaded = load_scene_or_report(o.scene_path, o.accuracy, o.threads);
   if (!loaded) return kExitUsage;
   Plan plan;
   try {

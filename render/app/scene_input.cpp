@@ -10,7 +10,7 @@
 namespace rugosim::app {
 
 std::optional<LoadedScene> load_scene_or_report(const std::string& path,
-                                                const AccuracyOverride& accuracy) {
+                                                const AccuracyOverride& accuracy, int threads) {
   SceneLoad load = load_scene_file(path);
   std::vector<SceneError> errors = load.errors;
   SceneWorld built;
@@ -25,7 +25,7 @@ std::optional<LoadedScene> load_scene_or_report(const std::string& path,
       fmt::print(stderr, "error: {} (with the accuracy options given)\n", e.what());
       return std::nullopt;
     }
-    built = build_world(load.scene, path);
+    built = build_world(load.scene, path, threads);
     errors = built.errors;
   }
   if (!errors.empty()) {

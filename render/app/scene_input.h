@@ -25,9 +25,11 @@ struct AccuracyOverride {
 
 // nullopt after printing the errors. `accuracy` is applied to the scene before the World is
 // built (the caller has checked the preset's name and each knob's range); a time-of-impact
-// tolerance left above the longest step is reported as an error too.
+// tolerance left above the longest step is reported as an error too. The World detects
+// collisions on `threads` threads (--threads).
 std::optional<LoadedScene> load_scene_or_report(const std::string& path,
-                                                const AccuracyOverride& accuracy = {});
+                                                const AccuracyOverride& accuracy = {},
+                                                int threads = 1);
 
 // Exit codes of INTERFACE.md.
 inline constexpr int kExitOk = 0;

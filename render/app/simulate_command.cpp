@@ -43,7 +43,7 @@ class BufferedOutput {
 }  // namespace
 
 int run_simulate(const SimulateOptions& o) {
-  std::optional<LoadedScene> loaded = load_scene_or_report(o.scene_path, o.accuracy);
+  std::optional<LoadedScene> loaded = load_scene_or_report(o.scene_path, o.accuracy, o.threads);
   if (!loaded) return kExitUsage;
   World& world = *loaded->world;
   const double duration = o.duration.value_or(loaded->scene.duration);

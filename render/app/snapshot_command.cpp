@@ -374,7 +374,7 @@ bool compare_all(const SnapshotOptions& o, const Setup& s, const std::vector<Ima
 }  // namespace
 
 int run_snapshot(const SnapshotOptions& o) {
-  std::optional<LoadedScene> loaded = load_scene_or_report(o.scene_path, o.accuracy);
+  std::optional<LoadedScene> loaded = load_scene_or_report(o.scene_path, o.accuracy, o.threads);
   if (!loaded) return kExitUsage;
   Setup s;
   try {
