@@ -1,26 +1,31 @@
-// Piles of 10, 50 and 200 irregular bodies (24 segments, σ = 3 mm) dropped into an open box and
-// left to settle for 3 simulated seconds (tests/support/pile_scene.h, the scene of the pile
-// test): rugosim's wall time per simulated second, with its step statistics, against Box2D
-// 2.4.1 on the same scene (bench/box2d_pile.h: each body a compound of convex pieces
-// approximating the same outline), measured in the same run. Box2D is the baseline: the ratio
-// column reads "rugosim time / Box2D time".
+// Piles of 10, 50, 200 and 1,000 irregular bodies (24 segments, σ = 3 mm) dropped into an open
+// box and left for 5 simulated seconds, long enough for a settled pile to sleep
+// (tests/support/pile_scene.h; scenes/pile_*.json are the same piles): rugosim's wall time per
+// simulated second at the draft and normal presets, on one thread and on every CPU, against
+// Box2D 2.4.1 on the same scene measured in the same run (bench/box2d_pile.h: each body a
+// compound of convex pieces approximating the same outline). The baseline is Box2D with one
+// outline point per B-spline segment (pile/box2d_1_sample: about 7 pieces per blob, the faster
+// and so the stricter one); the ratio column reads "rugosim time / Box2D time".
 //
-// Box2D steps at 60 Hz with 8 velocity and 3 position iterations (its testbed's settings), in
-// units where the pile's 0.1 m bodies are 1 unit (length_scale 10: Box2D's tolerances are
-// absolute and tuned for bodies of 0.1 to 10 m; at 1:1 its 1 cm polygon skin and 0.1 m box
-// margin are a tenth of a body and the 200-body pile did not finish one simulated second in 25
-// minutes), with the outline sampled at 2 points per segment (about 15 convex pieces per
-// concave blob, mass within 0.4% of rugosim's: Box2D's cost grows with the square of the
-// pieces per body, since each touching pair of bodies has a contact per pair of pieces).
-// Every rugosim contact here has μ = k·λ = 100/m · 2.7 mm = 0.27 (λ_min = 0), which Box2D gets
-// on every fixture, with the same ε = 0.3 and densities. A third variant runs rugosim with
-// sleeping off, to show what sleeping saves.
+// rugosim advances frame by frame at 30 fps, as `rugosim simulate` does. Box2D steps at 60 Hz
+// with 8 velocity and 3 position iterations (its testbed's settings), in units where the pile's
+// 0.1 m bodies are 1 unit (length_scale 10: Box2D's tolerances are absolute and tuned for
+// bodies of 0.1 to 10 m). Every rugosim contact here has μ = k·λ = 100/m · 2.7 mm = 0.27
+// (λ_min = 0), which Box2D gets on every fixture, with the same ε = 0.3 and densities.
+//
+// Counters: wall_per_sim_s; ns_per_body_step, the wall time per awake body and step (how cost
+// grows with the work); detection_s, the collision detection's share (World::profile); asleep_at,
+// when every body slept (−1: not within 5 s); and the step statistics.
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
 
 #include "box2d_pile.h"
+#include "engine/core/thread_pool.h"
+#include "engine/dynamics/accuracy.h"
 #include "engine/dynamics/world.h"
 #include "ratio_reporter.h"
 #include "support/pile_scene.h"
@@ -28,7 +33,8 @@
 namespace rugosim {
 namespace {
 
-constexpr double kSimulated = 3.0;  // s
+constexpr double kSimulated = 5.0;  // s
+constexpr double kFrame = 1.0 / 30.0;
 constexpr double kBox2dStep = 1.0 / 60.0;
 
 testing::PileSpec spec_for(std::int64_t bodies) {
@@ -37,43 +43,67 @@ testing::PileSpec spec_for(std::int64_t bodies) {
   return spec;
 }
 
-// Wall seconds per simulated second, as a counter next to the time per 3 s settle.
+// Wall seconds per simulated second, as a counter next to the time per 5 s run.
 void report_rate(benchmark::State& state) {
   state.counters["wall_per_sim_s"] = benchmark::Counter(
       kSimulated, benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
-void pile_rugosim(benchmark::State& state, bool sleeping) {
-  const testing::PileSpec spec = spec_for(state.range(0));
-  const std::vector<testing::PileBody> scene = testing::pile_scene(spec);
-  WorldSettings settings;
-  settings.sleep.enabled = sleeping;
+struct RugosimRun {
+  std::string preset;
+  int threads = 1;
+  bool sleeping = true;
+};
+
+void pile_rugosim(benchmark::State& state, const RugosimRun& run) {
+  const std::vector<testing::PileBody> scene = testing::pile_scene(spec_for(state.range(0)));
+  WorldSettings settings = with_accuracy(WorldSettings{}, *accuracy_preset(run.preset));
+  settings.sleep.enabled = run.sleeping;
   settings.record_events = false;
+  settings.threads = run.threads;
   StepStats stats;
-  std::size_t asleep = 0;
+  StepProfile profile;
+  double asleep_at = -1.0;
+  std::size_t awake = 0;
   for (auto _ : state) {
     state.PauseTiming();
     World world(settings);
     for (const testing::PileBody& b : scene)
       world.add_body(RigidBody(b.desc), b.name);
+    asleep_at = -1.0;
     state.ResumeTiming();
-    world.advance_to(kSimulated);
+    const auto frames = static_cast<int>(kSimulated / kFrame + 0.5);
+    for (int k = 1; k <= frames; ++k) {
+      world.advance_to(k * kFrame);
+      // O(n) per frame, next to a frame's steps: part of what a caller pays.
+      if (asleep_at < 0.0) {
+        bool all = true;
+        for (std::size_t i = 0; i < world.body_count() && all; ++i)
+          all = world.body(i).fixed() || world.asleep(i);
+        if (all) asleep_at = world.time();
+      }
+    }
     state.PauseTiming();
     stats = world.stats();
-    asleep = 0;
+    profile = world.profile();
+    awake = 0;
     for (std::size_t i = 0; i < world.body_count(); ++i)
-      asleep += world.asleep(i) ? 1u : 0u;
+      awake += !world.body(i).fixed() && !world.asleep(i) ? 1u : 0u;
     state.ResumeTiming();
   }
   report_rate(state);
+  state.counters["ns_per_body_step"] = benchmark::Counter(
+      1e-9 * static_cast<double>(stats.body_steps),
+      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["detection_s"] = profile.detection;
+  state.counters["resolution_s"] = profile.resolution;
+  state.counters["asleep_at"] = asleep_at;
+  state.counters["awake"] = static_cast<double>(awake);
   state.counters["steps"] = static_cast<double>(stats.steps);
-  state.counters["bisections"] = static_cast<double>(stats.bisections);
-  state.counters["collisions"] = static_cast<double>(stats.collisions);
+  state.counters["body_steps"] = static_cast<double>(stats.body_steps);
   state.counters["contacts"] = static_cast<double>(stats.contacts);
   state.counters["fallbacks"] = static_cast<double>(stats.fallbacks);
-  state.counters["rigid_clusters"] = static_cast<double>(stats.rigid_clusters);
   state.counters["crossings"] = static_cast<double>(stats.crossings);
-  state.counters["asleep"] = static_cast<double>(asleep);
 }
 
 void pile_box2d(benchmark::State& state, int samples_per_segment) {
@@ -101,34 +131,41 @@ void pile_box2d(benchmark::State& state, int samples_per_segment) {
   state.counters["fixtures"] = static_cast<double>(fixtures);
 }
 
+void add(const std::string& name, std::int64_t bodies, int repetitions,
+         const std::function<void(benchmark::State&)>& body) {
+  benchmark::RegisterBenchmark(name.c_str(), body)
+      ->Arg(bodies)
+      ->Iterations(1)
+      ->Repetitions(repetitions)
+      ->Unit(benchmark::kMillisecond)
+      ->UseRealTime();
+}
+
 void register_all() {
-  for (const std::int64_t n : {10, 50, 200}) {
-    // One iteration is a whole 3 s settle; repetitions give a median for the small piles.
-    const int repetitions = n <= 50 ? 3 : 1;
-    benchmark::RegisterBenchmark("pile/baseline", [](benchmark::State& s) { pile_box2d(s, 2); })
-        ->Arg(n)
-        ->Iterations(1)
-        ->Repetitions(repetitions)
-        ->Unit(benchmark::kMillisecond);
-    // Box2D with a coarser outline (1 point per segment, about 7 pieces per blob, mass 1.5%
-    // low): faster, less faithful.
-    benchmark::RegisterBenchmark("pile/box2d_1_sample",
-                                 [](benchmark::State& s) { pile_box2d(s, 1); })
-        ->Arg(n)
-        ->Iterations(1)
-        ->Repetitions(repetitions)
-        ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("pile/rugosim", [](benchmark::State& s) { pile_rugosim(s, true); })
-        ->Arg(n)
-        ->Iterations(1)
-        ->Repetitions(repetitions)
-        ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("pile/rugosim_no_sleep",
-                                 [](benchmark::State& s) { pile_rugosim(s, false); })
-        ->Arg(n)
-        ->Iterations(1)
-        ->Repetitions(repetitions)
-        ->Unit(benchmark::kMillisecond);
+  const int cpus = available_cpus();
+  for (const std::int64_t n : {10, 50, 200, 1000}) {
+    // One iteration is a whole 5 s run; repetitions give medians (fewer for the big piles).
+    const int repetitions = n <= 50 ? 5 : n == 200 ? 3 : 1;
+    add("pile/box2d_1_sample", n, repetitions, [](benchmark::State& s) { pile_box2d(s, 1); });
+    // A finer outline (2 points per segment, about 15 pieces per blob, mass within 0.4%).
+    if (n <= 200) {
+      add("pile/box2d_2_samples", n, repetitions, [](benchmark::State& s) { pile_box2d(s, 2); });
+    }
+    for (const std::string preset : {"draft", "normal"}) {
+      std::vector<int> thread_counts = {1};
+      if (cpus > 1) thread_counts.push_back(cpus);
+      for (const int threads : thread_counts) {
+        const RugosimRun run{preset, threads, true};
+        add("pile/" + preset + "_" + std::to_string(threads) +
+                (threads == 1 ? "_thread" : "_threads"),
+            n, repetitions, [run](benchmark::State& s) { pile_rugosim(s, run); });
+      }
+    }
+    // What sleeping saves (awake for the whole 5 s: the big pile is left out).
+    if (n <= 200) {
+      const RugosimRun run{"normal", cpus, false};
+      add("pile/normal_no_sleep", n, 1, [run](benchmark::State& s) { pile_rugosim(s, run); });
+    }
   }
 }
 
@@ -137,5 +174,6 @@ void register_all() {
 
 int main(int argc, char** argv) {
   rugosim::register_all();
+  rugosim::bench::set_baseline_variant("pile", "box2d_1_sample");
   return rugosim::bench::run_with_ratios(argc, argv);
 }

@@ -1,11 +1,23 @@
 #include "ratio_reporter.h"
 
 #include <cstdio>
+#include <map>
 #include <set>
 
 namespace rugosim::bench {
 
 namespace {
+
+std::map<std::string, std::string>& baseline_variants() {
+  static std::map<std::string, std::string> variants;
+  return variants;
+}
+
+std::string baseline_variant(const std::string& family) {
+  const auto it = baseline_variants().find(family);
+  return it == baseline_variants().end() ? "baseline" : it->second;
+}
+
 // Splits "family/variant/args" at the first two slashes.
 bool split_name(const std::string& name, std::string& family, std::string& variant,
                 std::string& args) {
@@ -48,11 +60,13 @@ void RatioReporter::Finalize() {
   });
   std::map<std::string, double> baseline;  // family + args -> ns
   for (const Entry& e : entries_) {
-    if (e.variant == "baseline") baseline[e.family + "/" + e.args] = e.ns_per_iteration;
+    if (e.variant == baseline_variant(e.family)) {
+      baseline[e.family + "/" + e.args] = e.ns_per_iteration;
+    }
   }
   std::printf("\n| benchmark | args | time / baseline |\n|---|---|---|\n");
   for (const Entry& e : entries_) {
-    if (e.variant == "baseline") continue;
+    if (e.variant == baseline_variant(e.family)) continue;
     const auto it = baseline.find(e.family + "/" + e.args);
     if (it == baseline.end() || it->second <= 0.0) {
       std::printf("| %s/%s | %s | (no baseline) |\n", e.family.c_str(), e.variant.c_str(),
@@ -63,6 +77,10 @@ void RatioReporter::Finalize() {
     }
   }
   std::fflush(stdout);
+}
+
+void set_baseline_variant(const std::string& family, const std::string& variant) {
+  baseline_variants()[family] = variant;
 }
 
 int run_with_ratios(int argc, char** argv) {

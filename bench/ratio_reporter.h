@@ -2,8 +2,9 @@
 // machine's absolute timings drift from run to run while ratios hold.
 //
 // Naming rule: a benchmark named "<family>/<variant>/<args...>" is compared with the run named
-// "<family>/baseline/<args...>" (same family and arguments). The console output of Google
-// Benchmark is kept; a Markdown table of ratios follows it.
+// "<family>/baseline/<args...>" (same family and arguments), or with the variant a program named
+// as its family's baseline (set_baseline_variant). The console output of Google Benchmark is
+// kept; a Markdown table of ratios follows it.
 #pragma once
 
 #include <map>
@@ -27,6 +28,10 @@ class RatioReporter : public benchmark::ConsoleReporter {
   };
   std::vector<Entry> entries_;
 };
+
+// Makes `variant` the baseline of `family` instead of "baseline" (e.g. a competitor's run that
+// the issue names). Call before run_with_ratios.
+void set_baseline_variant(const std::string& family, const std::string& variant);
 
 // Runs every registered benchmark with the ratio table: use as the body of main().
 int run_with_ratios(int argc, char** argv);
