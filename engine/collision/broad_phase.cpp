@@ -77,9 +77,29 @@ const std::vector<BodyPair>& SweepAndPrune::find_pairs(std::span<const BroadPhas
       pairs_.push_back(i < j ? BodyPair{i, j} : BodyPair{j, i});
     }
   }
-  std::sort(pairs_.begin(), pairs_.end(), [](const BodyPair& p, const BodyPair& q) {
-    return p.a < q.a || (p.a == q.a && p.b < q.b);
-  });
+  // Sorted by (a, b): a counting sort on a, then each body's few partners by insertion, linear
+  // in the pairs where a general sort was the sweep's most expensive part.
+  starts_.assign(count + 1, 0);
+  for (const BodyPair& p : pairs_)
+    ++starts_[p.a + 1];
+  for (std::size_t i = 0; i < count; ++i)
+    starts_[i + 1] += starts_[i];
+  sorted_.resize(pairs_.size());
+  cursor_.assign(starts_.begin(), starts_.end() - 1);
+  for (const BodyPair& p : pairs_)
+    sorted_[cursor_[p.a]++] = p;
+  for (std::size_t i = 0; i < count; ++i) {
+    const auto first = sorted_.begin() + starts_[i];
+    const auto last = sorted_.begin() + starts_[i + 1];
+    for (auto it = first; it != last; ++it) {
+      const BodyPair moving = *it;
+      auto slot = it;
+      for (; slot != first && (slot - 1)->b > moving.b; --slot)
+        *slot = *(slot - 1);
+      *slot = moving;
+    }
+  }
+  std::swap(pairs_, sorted_);
   return pairs_;
 }
 

@@ -41,6 +41,9 @@ class SweepAndPrune {
  private:
   std::vector<std::uint32_t> order_;  // proxies sorted by box.min along the sweep axis
   std::vector<BodyPair> pairs_;
+  std::vector<BodyPair> sorted_;       // scratch of the final sort
+  std::vector<std::uint32_t> starts_;  // per body a: where its pairs begin in sorted_
+  std::vector<std::uint32_t> cursor_;
   int axis_ = 0;  // 0 = x, 1 = y: the axis along which the boxes spread most
 };
 

@@ -32,8 +32,13 @@ void CollisionPipeline::carry_caches_over(const std::vector<BodyPair>& pairs) {
 
 const std::vector<ContactManifold>& CollisionPipeline::detect(std::span<const PlacedShape> bodies,
                                                               ThreadPool* pool) {
+  detect(bodies, pool, manifolds_);
+  return manifolds_;
+}
+
+void CollisionPipeline::detect(std::span<const PlacedShape> bodies, ThreadPool* pool,
+                               std::vector<ContactManifold>& out) {
   counts_ = {};
-  manifolds_.clear();
   proxies_.resize(bodies.size());
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     proxies_[i].box = bodies[i].shape->world_bounds(bodies[i].placement);
@@ -62,12 +67,13 @@ const std::vector<ContactManifold>& CollisionPipeline::detect(std::span<const Pl
   if (threads > 1) {
     // Small chunks: the cost of a pair ranges from a box test to a long search.
     const std::size_t grain =
-        std::max<std::size_t>(1, pairs.size() / (8 * static_cast<std::size_t>(threads)));
+        std::max<std::size_t>(1, pairs.size() / (32 * static_cast<std::size_t>(threads)));
     pool->parallel_for(pairs.size(), grain, collide_pairs);
   } else {
     collide_pairs(0, pairs.size(), 0);
   }
 
+  std::size_t found = 0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     PairResult& result = results_[k];
     counts_.leaf_pairs += result.leaf_pairs;
@@ -76,9 +82,10 @@ const std::vector<ContactManifold>& CollisionPipeline::detect(std::span<const Pl
     result.manifold.body_b = pairs[k].b;
     counts_.intersections += result.manifold.intersections.size();
     counts_.contacts += result.manifold.contacts.size();
-    manifolds_.push_back(result.manifold);
+    if (found == out.size()) out.emplace_back();
+    out[found++] = result.manifold;  // copy-assigned: the element's vectors keep their storage
   }
-  return manifolds_;
+  out.resize(found);
 }
 
 }  // namespace rugosim

@@ -47,6 +47,10 @@ class CollisionPipeline {
   // are shared among the threads of `pool` when one is given.
   const std::vector<ContactManifold>& detect(std::span<const PlacedShape> bodies,
                                              ThreadPool* pool = nullptr);
+  // The same manifolds written into `out` (its elements' storage reused: no allocation once a
+  // scene's contacts have been seen).
+  void detect(std::span<const PlacedShape> bodies, ThreadPool* pool,
+              std::vector<ContactManifold>& out);
 
   const CollisionCounts& counts() const { return counts_; }
   // The broad-phase pairs of the last detect(): bodies whose boxes (band included) overlap,

@@ -10,10 +10,20 @@
 namespace rugosim {
 namespace {
 
-// How long a worker waiting for the next loop spins before it blocks: longer than the World's
-// work between two loops of a busy step, short enough not to hold a core that other threads (the
-// renderer's, the encoder's) could use.
-constexpr auto kSpinTime = std::chrono::microseconds(100);
+// How long a worker waiting for the next loop spins before it blocks: twice the usual gap
+// between loops (the World asks for one per step, a fraction of a millisecond apart, and waking
+// a blocked thread costs tens of microseconds), within these bounds, so that a pool whose loops
+// are rare does not hold a core that other threads (the renderer's, the encoder's) could use.
+constexpr std::int64_t kMinSpinNs = 50'000;
+constexpr std::int64_t kMaxSpinNs = 2'000'000;
+// The caller waits for the workers to leave a loop this long before it blocks.
+constexpr auto kJoinSpin = std::chrono::microseconds(100);
+
+std::int64_t now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
 
 void relax() {
 #if defined(__x86_64__) || defined(__i386__)
@@ -62,7 +72,9 @@ void ThreadPool::worker_main(int thread) {
   for (;;) {
     // Wait for a generation newer than the last one served: spin first, then block.
     std::uint64_t now = generation_.load(std::memory_order_acquire);
-    const auto until = std::chrono::steady_clock::now() + kSpinTime;
+    const std::int64_t spin_ns = std::clamp<std::int64_t>(
+        2 * gap_ns_.load(std::memory_order_relaxed), kMinSpinNs, kMaxSpinNs);
+    const auto until = std::chrono::steady_clock::now() + std::chrono::nanoseconds(spin_ns);
     for (int spin = 1; now == seen; ++spin) {
       relax();
       now = generation_.load(std::memory_order_acquire);
@@ -94,6 +106,13 @@ void ThreadPool::parallel_for(std::size_t count, std::size_t grain, const Body& 
       body(begin, std::min(count, begin + grain), 0);
     return;
   }
+  // The gap since the last loop ended, smoothed (an eighth of each new one).
+  const std::int64_t start = now_ns();
+  if (last_end_ns_ > 0) {
+    const std::int64_t gap = start - last_end_ns_;
+    const std::int64_t old = gap_ns_.load(std::memory_order_relaxed);
+    gap_ns_.store(old + (gap - old) / 8, std::memory_order_relaxed);
+  }
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     body_ = &body;
@@ -107,7 +126,7 @@ void ThreadPool::parallel_for(std::size_t count, std::size_t grain, const Body& 
   wake_.notify_all();
   run_chunks(0);
   // Every worker leaves run_chunks only after the last chunk was taken; wait until all have.
-  const auto until = std::chrono::steady_clock::now() + kSpinTime;
+  const auto until = std::chrono::steady_clock::now() + kJoinSpin;
   for (int spin = 1; busy_.load(std::memory_order_acquire) != 0; ++spin) {
     relax();
     if (spin % 64 == 0 && std::chrono::steady_clock::now() > until) break;
@@ -119,6 +138,7 @@ void ThreadPool::parallel_for(std::size_t count, std::size_t grain, const Body& 
     error = error_;
     body_ = nullptr;
   }
+  last_end_ns_ = now_ns();
   if (error) std::rethrow_exception(error);
 }
 

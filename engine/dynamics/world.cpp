@@ -117,7 +117,7 @@ void World::detect() {
     placed_[i].asleep = !bodies_[i].fixed() && moving_[i] == 0;
   }
   const auto start = std::chrono::steady_clock::now();
-  detected_ = pipeline_.detect(placed_, pool_.get());
+  pipeline_.detect(placed_, pool_.get(), detected_);
   detected_pairs_ = pipeline_.near_pairs();
   profile_.detection += seconds_since(start);
 }
@@ -254,8 +254,9 @@ void World::step(double h) {
   detect();
   if (!any_crossing(detected_)) {
     consecutive_fallbacks_ = 0;
-    manifolds_ = detected_;
-    near_pairs_ = detected_pairs_;
+    // The detection's scratch becomes the state's record (the next detection overwrites it).
+    std::swap(manifolds_, detected_);
+    std::swap(near_pairs_, detected_pairs_);
     resolve(manifolds_, time_ + h);
     return;
   }
