@@ -10,10 +10,12 @@
 // curvatures clears both pieces at once and is as tight as the slab at the nearest points.
 //
 // With P(x) = ‖x − c‖² along a piece, the inner piece lies in the disk of radius √max P and the
-// outer one outside that of radius √min P, so ‖a − b‖ ≥ √min P_outer − √max P_inner. Both
-// extremes come from the reference point (s, t) alone once the rectangle's second derivatives
-// have the right sign: a concave P lies below its tangent at t, a convex one above (the signs
-// are proved over the whole interval by Bernstein coefficients of P'', a quartic).
+// outer one outside that of radius √min P, so ‖a − b‖ ≥ √min P_outer − √max P_inner, for any
+// centre c. P is a sextic, and its extremes over an interval are found exactly (at the ends or
+// at roots of P', polynomial_range.h). With c on the line through the nearest points and a
+// radius between the two pieces' curvatures, both extremes sit at the nearest points and the
+// bound is the distance itself; where a piece strays past its circle farther out, the bound is
+// lower, and the search halves the rectangle.
 #pragma once
 
 #include "engine/geometry/cubic_segment.h"
@@ -24,8 +26,8 @@ namespace rugosim {
 // on the line through a(s_ref) and b(t_ref) (points of the rectangle, normally a local minimum of
 // the distance in it, where the bound is tight), with a radius between the two pieces'
 // curvatures there. −infinity when the pieces do not bend so that such a circle fits (both
-// straight, or the convex one flatter than the concave one) or when the signs cannot be proved
-// over the rectangle; the caller then falls back on other bounds or on smaller rectangles.
+// straight, or the convex one flatter than the concave one); the caller then falls back on
+// other bounds or on smaller rectangles.
 double circle_separation_bound(const CubicSegment& a, const CubicSegment& b, double s_ref,
                                double t_ref, double s0, double s1, double t0, double t1);
 
