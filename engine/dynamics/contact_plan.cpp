@@ -31,9 +31,24 @@ ContactBodyState contact_state(const RigidBody& body, const Vec2& point) {
   return s;
 }
 
+ContactStatics contact_statics(const RigidBody& body_a, const RigidBody& body_b, const Contact& c,
+                               const ResolutionSettings& settings) {
+  ContactStatics k;
+  const Material& ma = body_a.material();
+  const Material& mb = body_b.material();
+  k.restitution = std::max(ma.restitution, mb.restitution);
+  k.restitution_max = std::max(ma.restitution_max, mb.restitution_max);
+  k.mu = contact_friction(body_a.friction_coefficient(c.segment_a, c.t_a, settings.friction_gain),
+                          body_b.friction_coefficient(c.segment_b, c.t_b, settings.friction_gain));
+  k.band = std::max(c.lambda_a + c.lambda_b, body_a.shape().min_band() + body_b.shape().min_band());
+  k.delta = std::clamp(k.band - c.distance, 0.0, k.band);
+  k.pressing = pressing_gravity(body_a, body_b, settings.gravity, c.normal);
+  k.resolved_speed = settings.resolved_gap_fraction * c.distance / settings.max_step;
+  return k;
+}
+
 ContactPlan plan_contact(const ContactBodyState& state_a, const ContactBodyState& state_b,
-                         const RigidBody& body_a, const RigidBody& body_b, const Contact& c,
-                         const ResolutionSettings& settings) {
+                         const ContactStatics& k, const Contact& c) {
   ContactPlan p;
   p.a = state_a;
   p.b = state_b;
@@ -41,29 +56,27 @@ ContactPlan plan_contact(const ContactBodyState& state_a, const ContactBodyState
   p.vn = u.dot(c.normal);
   p.vt = u.dot(perp(c.normal));
   p.vn_target = p.vn;
-  const Material& ma = body_a.material();
-  const Material& mb = body_b.material();
-  const double eps = std::max(ma.restitution, mb.restitution);
-  const double eps_max = std::max(ma.restitution_max, mb.restitution_max);
-  p.restitution = eps;
-  p.mu = contact_friction(body_a.friction_coefficient(c.segment_a, c.t_a, settings.friction_gain),
-                          body_b.friction_coefficient(c.segment_b, c.t_b, settings.friction_gain));
-
-  const double band =
-      std::max(c.lambda_a + c.lambda_b, body_a.shape().min_band() + body_b.shape().min_band());
-  const double delta = std::clamp(band - c.distance, 0.0, band);
-  p.approaching = p.vn < -settings.resolved_gap_fraction * c.distance / settings.max_step;
-  const double g_n = pressing_gravity(body_a, body_b, settings.gravity, c.normal);
-  if (g_n > 0.0 && delta > 0.0 && p.vn < 0.0 && p.vn > -std::sqrt(2.0 * g_n * band)) {
+  p.restitution = k.restitution;
+  p.mu = k.mu;
+  p.approaching = p.vn < -k.resolved_speed;
+  const double g_n = k.pressing;
+  if (g_n > 0.0 && k.delta > 0.0 && p.vn < 0.0 && p.vn > -std::sqrt(2.0 * g_n * k.band)) {
     p.micro = true;
-    p.vn_target = std::min(p.vn, -std::sqrt(2.0 * g_n * delta));
-    const double ratio = delta / band;
-    p.restitution = std::clamp((eps_max - eps) * ratio * ratio + eps, 0.0, 1.0);
+    p.vn_target = std::min(p.vn, -std::sqrt(2.0 * g_n * k.delta));
+    const double ratio = k.delta / k.band;
+    p.restitution =
+        std::clamp((k.restitution_max - k.restitution) * ratio * ratio + k.restitution, 0.0, 1.0);
     // Only u = u_A − u_B enters the impulse, so shifting B's velocity along n by
     // (v_n − v_n*) makes the impulse see the perturbed approach speed.
     p.b.velocity += (p.vn - p.vn_target) * c.normal;
   }
   return p;
+}
+
+ContactPlan plan_contact(const ContactBodyState& state_a, const ContactBodyState& state_b,
+                         const RigidBody& body_a, const RigidBody& body_b, const Contact& c,
+                         const ResolutionSettings& settings) {
+  return plan_contact(state_a, state_b, contact_statics(body_a, body_b, c, settings), c);
 }
 
 void sort_most_approaching_first(std::vector<PendingContact>& pending) {

@@ -31,6 +31,26 @@ struct ContactPlan {
 // The motion of a body at a contact point.
 ContactBodyState contact_state(const RigidBody& body, const Vec2& point);
 
+// What a plan takes from a contact that its bodies' velocities do not change: resolution plans
+// the same contacts over and over as impulses change the velocities, and these need working out
+// once per state (positions do not move while impulses are applied).
+struct ContactStatics {
+  double restitution = 0.0;      // ε of the pair (the larger)
+  double restitution_max = 0.0;  // ε_max of the pair (the larger)
+  double mu = 0.0;
+  double band = 0.0;            // m, λ_a + λ_b (at least the bodies' minimum bands)
+  double delta = 0.0;           // m, penetration into the band
+  double pressing = 0.0;        // m/s², g_n
+  double resolved_speed = 0.0;  // m/s, approach below which the contact is resolved
+};
+ContactStatics contact_statics(const RigidBody& body_a, const RigidBody& body_b, const Contact& c,
+                               const ResolutionSettings& settings);
+
+// The plan for contact c from its statics and the bodies' motion at it: the same plan, bit for
+// bit, as the overload below.
+ContactPlan plan_contact(const ContactBodyState& state_a, const ContactBodyState& state_b,
+                         const ContactStatics& statics, const Contact& c);
+
 // The plan for contact c between A and B moving as `state_a` and `state_b` (normally
 // contact_state of each body; a rigid cluster passes its composite motion instead). Materials,
 // friction and whether each side can move come from the bodies.

@@ -22,6 +22,9 @@ struct PlanCache {
   ContactPlan plan;
   std::uint64_t version_a = 0;
   std::uint64_t version_b = 0;
+  ContactStatics statics;
+  ContactBodyState state_a;  // the bodies at the contact, velocities as of the versions
+  ContactBodyState state_b;
 };
 
 void write_velocity(RigidBody& body, const Vec2& impulse, const Vec2& arm, double sign) {
@@ -52,12 +55,26 @@ ResolutionCounts resolve_contacts(std::span<RigidBody> bodies,
   // as planning it afresh).
   std::vector<std::uint64_t> version(bodies.size(), 1);
   std::vector<PlanCache> plans(refs.size());
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    const ContactManifold& m = manifolds[refs[i].manifold];
+    const Contact& c = m.contacts[refs[i].contact];
+    plans[i].statics = contact_statics(bodies[m.body_a], bodies[m.body_b], c, settings);
+    plans[i].state_a = contact_state(bodies[m.body_a], c.point);
+    plans[i].state_b = contact_state(bodies[m.body_b], c.point);
+  }
   const auto plan = [&](std::size_t i) -> const ContactPlan& {
     const ContactManifold& m = manifolds[refs[i].manifold];
     PlanCache& cache = plans[i];
     if (cache.version_a != version[m.body_a] || cache.version_b != version[m.body_b]) {
+      // Only the velocities change; arms and masses were taken once.
+      const BodyState& sa = bodies[m.body_a].state();
+      const BodyState& sb = bodies[m.body_b].state();
+      cache.state_a.velocity = sa.velocity;
+      cache.state_a.angular_velocity = sa.angular_velocity;
+      cache.state_b.velocity = sb.velocity;
+      cache.state_b.angular_velocity = sb.angular_velocity;
       cache.plan =
-          plan_contact(bodies[m.body_a], bodies[m.body_b], m.contacts[refs[i].contact], settings);
+          plan_contact(cache.state_a, cache.state_b, cache.statics, m.contacts[refs[i].contact]);
       cache.version_a = version[m.body_a];
       cache.version_b = version[m.body_b];
     }
