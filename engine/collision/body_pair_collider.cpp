@@ -100,7 +100,8 @@ void merge_duplicate_contacts(std::vector<Contact>& contacts, std::size_t segmen
 }
 
 void BodyPairCollider::find_leaf_pairs(const CollisionShape& a, const CollisionShape& b,
-                                       const Transform2& b_to_a, LeafPairCache* cache) {
+                                       const Transform2& b_to_a, LeafPairCache* cache,
+                                       double min_margin) {
   leaf_pairs_.clear();
   leaf_apart_.clear();
   if (cache == nullptr) {
@@ -112,7 +113,8 @@ void BodyPairCollider::find_leaf_pairs(const CollisionShape& a, const CollisionS
     cache->a = &a;
     cache->b = &b;
     cache->b_to_a = b_to_a;
-    cache->margin = LeafPairCache::kMarginRelative * std::min(a.tree().reach(), b.tree().reach());
+    cache->margin = std::max(
+        min_margin, LeafPairCache::kMarginRelative * std::min(a.tree().reach(), b.tree().reach()));
     cache->candidates.clear();
     a.tree().query(b.tree(), b_to_a, cache->candidates, cache->margin);
     cache->apart.assign(cache->candidates.size(), LeafPairCache::Apart{});
@@ -130,14 +132,14 @@ void BodyPairCollider::find_leaf_pairs(const CollisionShape& a, const CollisionS
 
 void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_a,
                                const CollisionShape& b, const Transform2& place_b,
-                               ContactManifold& out, LeafPairCache* cache) {
+                               ContactManifold& out, LeafPairCache* cache, double min_margin) {
   out.intersections.clear();
   out.contacts.clear();
   candidates_.clear();
 
   // Work in A's frame: A's segments are used as stored, only B's are moved.
   const Transform2 b_to_a = place_a.inverse() * place_b;
-  find_leaf_pairs(a, b, b_to_a, cache);
+  find_leaf_pairs(a, b, b_to_a, cache, min_margin);
 
   for (std::size_t k = 0; k < leaf_pairs_.size(); ++k) {
     const LeafPair& pair = leaf_pairs_[k];

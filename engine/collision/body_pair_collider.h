@@ -50,8 +50,10 @@ class BodyPairCollider {
   // (one per body pair, kept by the caller between calls) the trees are queried again only when
   // the bodies have moved relative to each other by more than its margin; the result is the
   // same, bit for bit.
+  // A new query of the cache uses a margin of at least `min_margin` (m).
   void collide(const CollisionShape& a, const Transform2& place_a, const CollisionShape& b,
-               const Transform2& place_b, ContactManifold& out, LeafPairCache* cache = nullptr);
+               const Transform2& place_b, ContactManifold& out, LeafPairCache* cache = nullptr,
+               double min_margin = 0.0);
 
   // Leaf pairs the last call examined (for statistics and tests).
   const std::vector<LeafPair>& last_leaf_pairs() const { return leaf_pairs_; }
@@ -60,7 +62,7 @@ class BodyPairCollider {
   NarrowPhaseSettings settings_;
   // The leaf pairs whose boxes overlap, from the cache when it still holds (see above).
   void find_leaf_pairs(const CollisionShape& a, const CollisionShape& b, const Transform2& b_to_a,
-                       LeafPairCache* cache);
+                       LeafPairCache* cache, double min_margin);
 
   std::vector<LeafPair> leaf_pairs_;
   std::vector<LeafPairCache::Apart*> leaf_apart_;  // per leaf pair, its proof in the cache

@@ -60,7 +60,9 @@ void CollisionPipeline::detect(std::span<const PlacedShape> bodies, ThreadPool* 
       const PlacedShape& a = bodies[pairs[k].a];
       const PlacedShape& b = bodies[pairs[k].b];
       PairResult& result = results_[k];
-      collider.collide(*a.shape, a.placement, *b.shape, b.placement, result.manifold, &caches_[k]);
+      // Wide enough that the pair's cache lasts a few steps of its relative motion.
+      collider.collide(*a.shape, a.placement, *b.shape, b.placement, result.manifold, &caches_[k],
+                       3.0 * (a.motion_per_step + b.motion_per_step));
       result.leaf_pairs = collider.last_leaf_pairs().size();
     }
   };

@@ -28,6 +28,9 @@ struct PlacedShape {
   Transform2 placement;  // body frame -> world
   bool fixed = false;
   bool asleep = false;
+  // m: how far the body can move in a step, a hint for how wide a margin the pair caches keep
+  // (a fast body would otherwise outrun its cache every step); 0 when unknown or still.
+  double motion_per_step = 0.0;
 };
 
 struct CollisionCounts {

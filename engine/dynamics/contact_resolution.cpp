@@ -37,12 +37,38 @@ void write_velocity(RigidBody& body, const Vec2& impulse, const Vec2& arm, doubl
 
 }  // namespace
 
+struct ContactResolver::Scratch {
+  std::vector<ContactRef> refs;
+  std::vector<std::uint64_t> version;
+  std::vector<PlanCache> plans;
+  std::vector<PendingContact> order;
+};
+
+ContactResolver::ContactResolver() = default;
+ContactResolver::ContactResolver(const ContactResolver&) {}
+ContactResolver& ContactResolver::operator=(const ContactResolver&) {
+  return *this;
+}
+ContactResolver::ContactResolver(ContactResolver&&) noexcept = default;
+ContactResolver& ContactResolver::operator=(ContactResolver&&) noexcept = default;
+ContactResolver::~ContactResolver() = default;
+
 ResolutionCounts resolve_contacts(std::span<RigidBody> bodies,
                                   std::span<const ContactManifold> manifolds,
                                   const ResolutionSettings& settings, double time,
                                   std::vector<ContactEvent>* events) {
+  ContactResolver resolver;
+  return resolver.resolve(bodies, manifolds, settings, time, events);
+}
+
+ResolutionCounts ContactResolver::resolve(std::span<RigidBody> bodies,
+                                          std::span<const ContactManifold> manifolds,
+                                          const ResolutionSettings& settings, double time,
+                                          std::vector<ContactEvent>* events) {
+  if (!scratch_) scratch_ = std::make_unique<Scratch>();
   ResolutionCounts counts;
-  std::vector<ContactRef> refs;
+  std::vector<ContactRef>& refs = scratch_->refs;
+  refs.clear();
   for (std::size_t m = 0; m < manifolds.size(); ++m) {
     for (std::size_t k = 0; k < manifolds[m].contacts.size(); ++k)
       refs.push_back({m, k});
@@ -53,9 +79,12 @@ ResolutionCounts resolve_contacts(std::span<RigidBody> bodies,
   // pass leave most bodies alone: each body's velocities carry a version, and a contact is
   // planned again only when a version of its bodies moved on since (the same plan, bit for bit,
   // as planning it afresh).
-  std::vector<std::uint64_t> version(bodies.size(), 1);
-  std::vector<PlanCache> plans(refs.size());
+  std::vector<std::uint64_t>& version = scratch_->version;
+  version.assign(bodies.size(), 1);
+  std::vector<PlanCache>& plans = scratch_->plans;
+  if (plans.size() < refs.size()) plans.resize(refs.size());
   for (std::size_t i = 0; i < refs.size(); ++i) {
+    plans[i].version_a = plans[i].version_b = 0;  // nothing planned yet
     const ContactManifold& m = manifolds[refs[i].manifold];
     const Contact& c = m.contacts[refs[i].contact];
     plans[i].statics = contact_statics(bodies[m.body_a], bodies[m.body_b], c, settings);
@@ -81,7 +110,7 @@ ResolutionCounts resolve_contacts(std::span<RigidBody> bodies,
     return cache.plan;
   };
 
-  std::vector<PendingContact> order;
+  std::vector<PendingContact>& order = scratch_->order;
   for (int pass = 0; pass < settings.max_passes; ++pass) {
     order.clear();
     for (std::size_t i = 0; i < refs.size(); ++i) {

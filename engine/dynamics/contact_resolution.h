@@ -35,6 +35,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -68,5 +69,26 @@ ResolutionCounts resolve_contacts(std::span<RigidBody> bodies,
                                   std::span<const ContactManifold> manifolds,
                                   const ResolutionSettings& settings, double time,
                                   std::vector<ContactEvent>* events);
+
+// The same, keeping its working memory from one call to the next (a World resolves every step;
+// fresh buffers of hundreds of kilobytes each time cost page faults).
+class ContactResolver {
+ public:
+  ContactResolver();
+  // A copy starts with no working memory of its own (it is only a cache).
+  ContactResolver(const ContactResolver&);
+  ContactResolver& operator=(const ContactResolver&);
+  ContactResolver(ContactResolver&&) noexcept;
+  ContactResolver& operator=(ContactResolver&&) noexcept;
+  ~ContactResolver();
+
+  ResolutionCounts resolve(std::span<RigidBody> bodies, std::span<const ContactManifold> manifolds,
+                           const ResolutionSettings& settings, double time,
+                           std::vector<ContactEvent>* events);
+
+ private:
+  struct Scratch;
+  std::unique_ptr<Scratch> scratch_;
+};
 
 }  // namespace rugosim

@@ -115,6 +115,9 @@ void World::detect() {
     // A body that does not move in this sub-step is tested only against bodies that do, as
     // the broad phase treats sleeping bodies.
     placed_[i].asleep = !bodies_[i].fixed() && moving_[i] == 0;
+    placed_[i].motion_per_step = placed_[i].asleep || bodies_[i].fixed()
+                                     ? 0.0
+                                     : bodies_[i].boundary_speed() * settings_.max_step;
   }
   const auto start = std::chrono::steady_clock::now();
   pipeline_.detect(placed_, pool_.get(), detected_);
@@ -190,8 +193,8 @@ void World::resolve(const std::vector<ContactManifold>& manifolds, double time) 
   if (any_crossing(manifolds)) ++stats_.crossings;
   stats_.islands_woken += sleep_.wake_touched(bodies_, manifolds, time);
   const auto start = std::chrono::steady_clock::now();
-  const ResolutionCounts counts = resolve_contacts(bodies_, manifolds, resolution, time,
-                                                   settings_.record_events ? &events_ : nullptr);
+  const ResolutionCounts counts = resolver_.resolve(bodies_, manifolds, resolution, time,
+                                                    settings_.record_events ? &events_ : nullptr);
   profile_.resolution += seconds_since(start);
   stats_.collisions += counts.collisions;
   stats_.contacts += counts.contacts;

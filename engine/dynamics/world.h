@@ -52,6 +52,7 @@
 #include "engine/collision/collision_pipeline.h"
 #include "engine/core/thread_pool.h"
 #include "engine/core/types.h"
+#include "engine/dynamics/contact_resolution.h"
 #include "engine/dynamics/event_record.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/dynamics/sleep_tracker.h"
@@ -171,6 +172,7 @@ class World {
   std::vector<PlacedShape> placed_;
   CollisionPipeline pipeline_;
   StepPlanner planner_;
+  ContactResolver resolver_;
   std::vector<std::uint8_t> awake_;  // per body: 1 when neither fixed nor asleep (next_step)
   OwnedThreadPool pool_;
   std::vector<ContactManifold> detected_;   // copy of the latest detection
