@@ -77,6 +77,20 @@ void RatioReporter::Finalize() {
     }
   }
   std::fflush(stdout);
+  if (!table_path_.empty()) {
+    // Tab-separated, for plots: family, variant, args, ns per iteration (the median where
+    // there were repetitions).
+    if (std::FILE* table = std::fopen(table_path_.c_str(), "w")) {
+      std::fprintf(table, "family\tvariant\targs\tns\n");
+      for (const Entry& e : entries_) {
+        std::fprintf(table, "%s\t%s\t%s\t%.9g\n", e.family.c_str(), e.variant.c_str(),
+                     e.args.c_str(), e.ns_per_iteration);
+      }
+      std::fclose(table);
+    } else {
+      std::fprintf(stderr, "cannot write %s\n", table_path_.c_str());
+    }
+  }
 }
 
 void set_baseline_variant(const std::string& family, const std::string& variant) {
@@ -84,9 +98,21 @@ void set_baseline_variant(const std::string& family, const std::string& variant)
 }
 
 int run_with_ratios(int argc, char** argv) {
+  // --ratio_table=FILE (ours, taken out before Google Benchmark parses the rest).
+  std::string table;
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind("--ratio_table=", 0) == 0) {
+      table = arg.substr(std::string("--ratio_table=").size());
+    } else {
+      argv[kept++] = argv[i];
+    }
+  }
+  argc = kept;
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  RatioReporter reporter;
+  RatioReporter reporter(table);
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
   return 0;

@@ -9,6 +9,7 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -17,6 +18,8 @@ namespace rugosim::bench {
 
 class RatioReporter : public benchmark::ConsoleReporter {
  public:
+  // With a path, Finalize also writes the runs as a tab-separated table there.
+  explicit RatioReporter(std::string table_path = {}) : table_path_(std::move(table_path)) {}
   void ReportRuns(const std::vector<Run>& runs) override;
   void Finalize() override;
 
@@ -27,13 +30,15 @@ class RatioReporter : public benchmark::ConsoleReporter {
     bool median = false;  // the median over repetitions, not a single run
   };
   std::vector<Entry> entries_;
+  std::string table_path_;
 };
 
 // Makes `variant` the baseline of `family` instead of "baseline" (e.g. a competitor's run that
 // the issue names). Call before run_with_ratios.
 void set_baseline_variant(const std::string& family, const std::string& variant);
 
-// Runs every registered benchmark with the ratio table: use as the body of main().
+// Runs every registered benchmark with the ratio table: use as the body of main(). A
+// --ratio_table=FILE argument also writes the runs as a tab-separated table (for plots).
 int run_with_ratios(int argc, char** argv);
 
 }  // namespace rugosim::bench
