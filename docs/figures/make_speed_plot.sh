@@ -35,8 +35,9 @@ set logscale xy
 set xlabel "bodies in the pile"
 set ylabel "wall time per simulated second (s)"
 set title "Piles settling for 5 s: rugosim (every CPU of this machine) and Box2D 2.4.1"
-set key top left
+set key bottom right
 set grid
+set xrange [8:1300]
 set xtics (10, 50, 200, 1000)
 plot "$work/box2d_1_sample.dat" with linespoints lw 2 pt 7 title "Box2D 2.4.1 (1 outline point per segment)", \
      "$work/$normal.dat" with linespoints lw 2 pt 5 title "rugosim normal", \
