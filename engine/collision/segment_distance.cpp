@@ -126,11 +126,10 @@ void push_children(const Cell& cell, double cutoff, std::vector<Cell>& heap,
   }
 }
 
-// Step 4 of the header: best-first search from `best`, which the certificate could not close.
-Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const Tolerances& tol,
-                           const NarrowPhaseSettings& settings, Candidate best) {
-  const int cell_iterations = std::min(kCellIterations, settings.seed_iterations);
-  int deep_descents = 0;
+// The search's first rectangles, the four quarters of the square (those whose bound reaches
+// `cutoff` are dropped; see push_children), on a fresh heap.
+std::vector<Cell> first_cells(const CubicSegment& a, const CubicSegment& b, double cutoff,
+                              double* dropped_min = nullptr) {
   std::vector<Cell> heap;
   heap.reserve(64);
   Cell root;
@@ -138,7 +137,16 @@ Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const T
   root.pb = b.bezier();
   root.deviation_a = chord_deviation(root.pa);
   root.deviation_b = chord_deviation(root.pb);
-  push_children(root, best.distance - tol.accuracy, heap);
+  push_children(root, cutoff, heap, dropped_min);
+  return heap;
+}
+
+// Step 4 of the header: best-first search from `best`, which the certificate could not close.
+Candidate branch_and_bound(const CubicSegment& a, const CubicSegment& b, const Tolerances& tol,
+                           const NarrowPhaseSettings& settings, Candidate best) {
+  const int cell_iterations = std::min(kCellIterations, settings.seed_iterations);
+  int deep_descents = 0;
+  std::vector<Cell> heap = first_cells(a, b, best.distance - tol.accuracy);
   for (int examined = 0; !heap.empty() && examined < settings.max_cells; ++examined) {
     std::pop_heap(heap.begin(), heap.end(), farther);
     const Cell cell = heap.back();
@@ -205,14 +213,7 @@ std::optional<double> proves_farther_than(const CubicSegment& a, const CubicSegm
   // above the level may go.
   const double cutoff = std::nextafter(level, std::numeric_limits<double>::infinity());
   double lowest = std::numeric_limits<double>::infinity();
-  std::vector<Cell> heap;
-  heap.reserve(64);
-  Cell root;
-  root.pa = a.bezier();
-  root.pb = b.bezier();
-  root.deviation_a = chord_deviation(root.pa);
-  root.deviation_b = chord_deviation(root.pb);
-  push_children(root, cutoff, heap, &lowest);
+  std::vector<Cell> heap = first_cells(a, b, cutoff, &lowest);
   for (int examined = 0; !heap.empty(); ++examined) {
     if (examined >= settings.max_cells) return std::nullopt;
     std::pop_heap(heap.begin(), heap.end(), farther);
