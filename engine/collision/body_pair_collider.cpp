@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include "engine/collision/obb_overlap.h"
@@ -108,16 +109,22 @@ void BodyPairCollider::find_leaf_pairs(const CollisionShape& a, const CollisionS
     a.tree().query(b.tree(), b_to_a, leaf_pairs_);
     return;
   }
-  if (cache->a != &a || cache->b != &b ||
+  if (cache->a != a.id() || cache->b != b.id() ||
       relative_motion(cache->b_to_a, b_to_a, b.tree().reach()) > cache->margin) {
-    cache->a = &a;
-    cache->b = &b;
+    cache->a = cache->b = 0;  // until the query is through
     cache->b_to_a = b_to_a;
     cache->margin = std::max(
         min_margin, LeafPairCache::kMarginRelative * std::min(a.tree().reach(), b.tree().reach()));
     cache->candidates.clear();
-    a.tree().query(b.tree(), b_to_a, cache->candidates, cache->margin);
+    // A little wider than the margin: boxes placed with other roundings than the query's must
+    // still be among the candidates at a move of exactly the margin.
+    const double slack = cache->margin * (1.0 + 1e-9) +
+                         64.0 * std::numeric_limits<double>::epsilon() *
+                             (a.tree().reach() + b.tree().reach() + b_to_a.translation().norm());
+    a.tree().query(b.tree(), b_to_a, cache->candidates, slack);
     cache->apart.assign(cache->candidates.size(), LeafPairCache::Apart{});
+    cache->a = a.id();
+    cache->b = b.id();
   }
   // The query's own test at the leaves, in its order.
   for (std::size_t k = 0; k < cache->candidates.size(); ++k) {
@@ -155,7 +162,10 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     const double widest_band = a.segment_band(pair.segment_a) + b.segment_band(pair.segment_b);
     const WithinThreshold within = nearest_points_within(seg_a, seg_b, widest_band, settings_);
     if (apart != nullptr) {
-      const double margin = within.lower_bound - widest_band;
+      // Apart means beyond the band and beyond "touching" (crossing_distance), which a pair
+      // without rugosity and a coarse accuracy can have wider than its band.
+      const double margin =
+          within.lower_bound - std::max(widest_band, crossing_distance(seg_a, seg_b, settings_));
       *apart = {b_to_a, margin > 0.0 ? margin : 0.0};
     }
     if (!within.nearest) continue;  // separated

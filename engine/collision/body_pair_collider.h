@@ -3,6 +3,7 @@
 // (‖d‖ <= λ_a(t_a) + λ_b(t_b)) or separated, and the contacts are merged into one manifold.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "engine/collision/aobb_tree.h"
@@ -32,8 +33,8 @@ struct LeafPairCache {
     double margin = 0.0;  // m; 0: no proof
   };
 
-  const CollisionShape* a = nullptr;  // the shapes it was made for; null: nothing cached
-  const CollisionShape* b = nullptr;
+  std::uint64_t a = 0;  // the shapes it was made for (CollisionShape::id); 0: nothing cached
+  std::uint64_t b = 0;
   Transform2 b_to_a;    // B's body frame in A's, when the candidates were found
   double margin = 0.0;  // m
   std::vector<LeafPair> candidates;

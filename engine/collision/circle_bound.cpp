@@ -28,11 +28,13 @@ SquaredDistance squared_distance_to(const CubicSegment& x, const Vec2& c) {
     for (std::size_t j = 0; j < 4; ++j)
       out.p[i + j] += q[i].dot(q[j]);
   }
-  double magnitude = 0.0;
-  for (const double e : out.p)
-    magnitude += std::abs(e);
+  // The coefficients' errors scale with the products they sum, (Σ|q_i|)² at most, whatever
+  // cancels in them.
+  double reach = 0.0;
+  for (const Vec2& v : q)
+    reach += v.norm();
   out.rounding = 32.0 * kEpsilon *
-                 (magnitude + 2.0 * q[0].norm() * (k[0].cwiseAbs().sum() + c.cwiseAbs().sum()));
+                 (reach * reach + 2.0 * q[0].norm() * (k[0].cwiseAbs().sum() + c.cwiseAbs().sum()));
   return out;
 }
 

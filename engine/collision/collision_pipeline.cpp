@@ -23,7 +23,7 @@ void CollisionPipeline::carry_caches_over(const std::vector<BodyPair>& pairs) {
     if (old < cache_pairs_.size() && cache_pairs_[old] == pairs[k]) {
       std::swap(next_caches_[k], caches_[old]);
     } else {
-      next_caches_[k].a = nullptr;  // a new pair: nothing cached
+      next_caches_[k].a = 0;  // a new pair: nothing cached
     }
   }
   std::swap(caches_, next_caches_);

@@ -1,6 +1,8 @@
 #include "engine/collision/collision_shape.h"
 
 #include <algorithm>
+#include <atomic>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -27,9 +29,15 @@ CollisionShape::CollisionShape(PeriodicBSpline curve, ToleranceProfile tolerance
       tolerances_(checked(curve_, std::move(tolerances))),
       min_band_(kMinContactBandRelative * curve_.hull_bounds().diagonal()),
       tree_(curve_, tolerances_, min_band_) {
+  static std::atomic<std::uint64_t> next_id{1};
+  id_ = next_id.fetch_add(1, std::memory_order_relaxed);
+  // A few roundings wider than the exact largest λ_j(t): ToleranceProfile::at evaluates the same
+  // cubic another way, and a band must never exceed this bound, even by an ulp.
   segment_band_.reserve(curve_.size());
-  for (std::size_t j = 0; j < curve_.size(); ++j)
-    segment_band_.push_back(std::max(tolerances_.segment_range(j).hi, min_band_));
+  for (std::size_t j = 0; j < curve_.size(); ++j) {
+    segment_band_.push_back(std::max(tolerances_.segment_range(j).hi, min_band_) *
+                            (1.0 + 16.0 * std::numeric_limits<double>::epsilon()));
+  }
 }
 
 Aabb CollisionShape::world_bounds(const Transform2& placement) const {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "engine/collision/aobb_tree.h"
@@ -37,11 +38,16 @@ class CollisionShape {
   // World box around the placed body and its tolerance band, for the broad phase.
   Aabb world_bounds(const Transform2& placement) const;
 
+  // A number no other shape built in this process has (copies keep it: the same geometry), for
+  // caches that must tell shapes apart even where one was freed and another built at its address.
+  std::uint64_t id() const { return id_; }
+
  private:
   PeriodicBSpline curve_;
   ToleranceProfile tolerances_;
   double min_band_ = 0.0;
   std::vector<double> segment_band_;  // m, per segment
+  std::uint64_t id_ = 0;
   AobbTree tree_;
 };
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace rugosim {
 namespace {
@@ -92,6 +94,7 @@ int roots_inside(const Polynomial6& p, int degree, double lo, double hi, double*
 }  // namespace
 
 PolynomialRange polynomial_range(const Polynomial6& p, int degree, double lo, double hi) {
+  if (hi < lo) std::swap(lo, hi);
   PolynomialRange range;
   range.lo = range.hi = evaluate(p, degree, lo);
   const auto consider = [&](double x) {

@@ -17,7 +17,8 @@ struct PolynomialRange {
   double hi = 0.0;
 };
 
-// The smallest and largest value of the polynomial of the given degree (<= 6) over [lo, hi].
+// The smallest and largest value of the polynomial of the given degree (<= 6) over [lo, hi]
+// (the ends in either order).
 PolynomialRange polynomial_range(const Polynomial6& p, int degree, double lo, double hi);
 
 }  // namespace rugosim

@@ -38,11 +38,17 @@ void relax() {
 ThreadPool::ThreadPool(int threads) {
   const int workers = std::max(threads, 1) - 1;
   workers_.reserve(static_cast<std::size_t>(workers));
-  for (int i = 0; i < workers; ++i)
-    workers_.emplace_back([this, i] { worker_main(i + 1); });
+  try {
+    for (int i = 0; i < workers; ++i)
+      workers_.emplace_back([this, i] { worker_main(i + 1); });
+  } catch (...) {
+    // Out of threads (a process limit): stop those started, so that none is left unjoined.
+    stop_workers();
+    throw;
+  }
 }
 
-ThreadPool::~ThreadPool() {
+void ThreadPool::stop_workers() {
   {
     const std::lock_guard<std::mutex> lock(mutex_);
     stopping_ = true;
@@ -51,6 +57,11 @@ ThreadPool::~ThreadPool() {
   wake_.notify_all();
   for (std::thread& t : workers_)
     t.join();
+  workers_.clear();
+}
+
+ThreadPool::~ThreadPool() {
+  stop_workers();
 }
 
 void ThreadPool::run_chunks(int thread) {

@@ -43,6 +43,8 @@ class ThreadPool {
 
  private:
   void worker_main(int thread);
+  // Tells every worker to leave and joins them.
+  void stop_workers();
   // Takes chunks of the current loop until none are left.
   void run_chunks(int thread);
 

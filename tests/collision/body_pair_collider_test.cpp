@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <set>
 #include <utility>
 #include <vector>
@@ -205,19 +207,22 @@ void expect_same_manifold(const ContactManifold& x, const ContactManifold& y, in
   }
 }
 
-// The leaf-pair cache changes nothing: two rough blobs wandering in and out of contact (small
-// moves, as in a resting pile, and jumps past the cache's margin) give, with the cache, the
-// very manifolds of a fresh query at every step, while the trees are queried only now and then.
-TEST(BodyPairCollider, LeafPairCacheGivesTheSameManifoldsAsFreshQueries) {
-  const CollisionShape a = make_shape(blob_control_points(0.1, 0.4, 24, 11), 0.003);
-  const CollisionShape b = make_shape(blob_control_points(0.1, 0.4, 24, 12), 0.003);
-  Rng rng(31);
-  BodyPairCollider cached_collider, fresh_collider;
+struct CacheRun {
+  int touching = 0;  // steps with the pair in contact or crossing
+  int queries = 0;   // steps that queried the trees again
+};
+
+// Two shapes wandering around each other (small moves, as in a resting pile, and jumps past the
+// cache's margin): at every step the cache must give the very manifold of a fresh query.
+CacheRun expect_cache_changes_nothing(const CollisionShape& a, const CollisionShape& b,
+                                      const NarrowPhaseSettings& settings, std::uint64_t seed) {
+  Rng rng(seed);
+  BodyPairCollider cached_collider(settings), fresh_collider(settings);
   LeafPairCache cache;
   ContactManifold with_cache, fresh;
   double angle_b = 0.0;
   Vec2 position_b(0.17, 0.02);
-  int touching = 0, queries = 0;
+  CacheRun run;
   const Transform2 place_a(0.3, Vec2(0.0, 0.0));
   for (int step = 0; step < 3000; ++step) {
     if (rng.uniform() < 0.01) {
@@ -234,15 +239,59 @@ TEST(BodyPairCollider, LeafPairCacheGivesTheSameManifoldsAsFreshQueries) {
     const Transform2 cached_at = cache.b_to_a;
     cached_collider.collide(a, place_a, b, place_b, with_cache, &cache);
     fresh_collider.collide(a, place_a, b, place_b, fresh);
-    queries +=
+    run.queries +=
         cache.candidates != before || cache.b_to_a.translation() != cached_at.translation() ? 1 : 0;
     expect_same_manifold(with_cache, fresh, step);
     EXPECT_EQ(cached_collider.last_leaf_pairs(), fresh_collider.last_leaf_pairs()) << step;
-    touching += fresh.state() != PairState::kSeparated ? 1 : 0;
+    run.touching += fresh.state() != PairState::kSeparated ? 1 : 0;
   }
-  RecordProperty("queries", std::to_string(queries));
-  EXPECT_GT(touching, 300);
-  EXPECT_LT(queries, 1500) << "the cache should spare most queries";
+  return run;
+}
+
+// The leaf-pair cache changes nothing, while the trees are queried only now and then.
+TEST(BodyPairCollider, LeafPairCacheGivesTheSameManifoldsAsFreshQueries) {
+  const CollisionShape a = make_shape(blob_control_points(0.1, 0.4, 24, 11), 0.003);
+  const CollisionShape b = make_shape(blob_control_points(0.1, 0.4, 24, 12), 0.003);
+  const CacheRun run = expect_cache_changes_nothing(a, b, {}, 31);
+  RecordProperty("queries", std::to_string(run.queries));
+  EXPECT_GT(run.touching, 300);
+  EXPECT_LT(run.queries, 1500) << "the cache should spare most queries";
+}
+
+// Without rugosity and at a coarse accuracy "touching" (crossing_distance) is wider than the
+// band: a candidate is proved apart only beyond both.
+TEST(BodyPairCollider, LeafPairCacheHoldsWhereTouchingIsWiderThanTheBand) {
+  const CollisionShape a = make_shape(blob_control_points(0.1, 0.4, 24, 13), 0.0);
+  const CollisionShape b = make_shape(blob_control_points(0.1, 0.4, 24, 14), 0.0);
+  NarrowPhaseSettings coarse;
+  coarse.relative_accuracy = 1e-4;
+  ASSERT_GT(crossing_distance(a.curve().segment(0), b.curve().segment(0), coarse),
+            a.segment_band(0) + b.segment_band(0));
+  const CacheRun run = expect_cache_changes_nothing(a, b, coarse, 37);
+  EXPECT_GT(run.touching, 300);
+}
+
+// A cache belongs to the shapes it was made for, not to where they lie in memory: shapes made
+// again at the same address (as a scene reloaded into the same storage) query afresh.
+TEST(BodyPairCollider, LeafPairCacheIsNotFooledByShapesMadeAtTheSameAddress) {
+  std::optional<CollisionShape> a, b;
+  a.emplace(make_shape(blob_control_points(0.1, 0.4, 24, 11), 0.003));
+  b.emplace(make_shape(blob_control_points(0.1, 0.4, 24, 12), 0.003));
+  const Transform2 place_a(0.3, Vec2(0.0, 0.0));
+  const Transform2 place_b(0.5, Vec2(0.17, 0.02));
+  BodyPairCollider collider;
+  LeafPairCache cache;
+  ContactManifold with_cache, fresh;
+  collider.collide(*a, place_a, *b, place_b, with_cache, &cache);
+  // Other outlines in the same storage, placed as before: the first query's leaf pairs mean
+  // nothing for them (the old trees had other leaves).
+  a.emplace(make_shape(circle_control_points(0.15, 32), 0.003));
+  b.emplace(make_shape(circle_control_points(0.03, 16), 0.003));
+  collider.collide(*a, place_a, *b, place_b, with_cache, &cache);
+  BodyPairCollider fresh_collider;
+  fresh_collider.collide(*a, place_a, *b, place_b, fresh);
+  ASSERT_NE(fresh.state(), PairState::kSeparated);
+  expect_same_manifold(with_cache, fresh, 0);
 }
 
 TEST(CollisionPipeline, FindsEveryTouchingPairOnceAndSkipsFixedPairs) {

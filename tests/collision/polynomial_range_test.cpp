@@ -26,6 +26,10 @@ TEST(PolynomialRange, ClosedForms) {
   const PolynomialRange cubic = polynomial_range({0.0, -1.0, 0.0, 1.0}, 3, -0.9, 0.9);
   EXPECT_NEAR(cubic.hi, 2.0 * std::sqrt(3.0) / 9.0, 1e-15);
   EXPECT_NEAR(cubic.lo, -2.0 * std::sqrt(3.0) / 9.0, 1e-15);
+  // The interval's ends in either order.
+  const PolynomialRange reversed = polynomial_range({0.0, -1.0, 0.0, 1.0}, 3, 0.9, -0.9);
+  EXPECT_EQ(reversed.lo, cubic.lo);
+  EXPECT_EQ(reversed.hi, cubic.hi);
   // A product of sextic roots: (x − 0.1)(x − 0.2)...(x − 0.6), tiny extremes between them.
   Polynomial6 p{1.0};
   for (int r = 1; r <= 6; ++r) {
