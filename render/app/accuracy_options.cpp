@@ -5,6 +5,7 @@
 
 #include "engine/dynamics/accuracy.h"
 #include "engine/dynamics/world.h"
+#include "render/app/number_option.h"
 
 namespace rugosim::app {
 
@@ -21,17 +22,11 @@ void add_accuracy_options(CLI::App& command, AccuracyOverride& out) {
     const std::string key(knob.key);
     const CLI::Validator in_range(
         [knob](std::string& text) -> std::string {
-          double value = 0.0;
-          try {
-            std::size_t used = 0;
-            value = std::stod(text, &used);
-            if (used != text.size()) return "expected " + knob.expectation();
-          } catch (const std::exception&) {
-            return "expected " + knob.expectation();
-          }
-          return knob.valid(value) ? std::string() : "expected " + knob.expectation();
+          const std::optional<double> value = parse_number(text, knob.integer);
+          if (value && knob.valid(*value)) return {};
+          return "expected " + knob.expectation() + ", got \"" + text + "\"";
         },
-        knob.expectation());
+        knob.expectation(), kNumberValidator);
     command
         .add_option_function<double>(
             name, [&out, key](const double& value) { out.knobs[key] = value; },
@@ -47,7 +42,7 @@ void add_threads_option(CLI::App& command, int& threads) {
       .add_option("--threads", threads,
                   "threads for collision detection (default: the CPUs this process may use, " +
                       std::to_string(threads) + " here); results do not depend on it")
-      ->check(CLI::Range(1, World::kMaxThreads))
+      ->check(number_in({1, false, World::kMaxThreads, false, true, ""}))
       ->type_name("N");
 }
 

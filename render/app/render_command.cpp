@@ -16,6 +16,7 @@
 #include "render/app/frame_memory.h"
 #include "render/app/progress.h"
 #include "render/app/render_scene.h"
+#include "render/app/run_length.h"
 #include "render/app/scene_input.h"
 #include "render/app/sigint_guard.h"
 #include "render/draw/scene_renderer.h"
@@ -142,7 +143,11 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
   const Scene& scene = loaded.scene;
   plan.clip.fps = o.fps.value_or(scene.render.fps);
   const double duration = o.duration.value_or(scene.duration);
-  const auto last = static_cast<std::size_t>(std::floor(duration * plan.clip.fps + 1e-9));
+  const RunFrames run =
+      run_frames(duration, o.duration ? "--duration" : "world.duration", plan.clip.fps,
+                 o.fps ? "--fps" : "render.fps", loaded.world->settings().min_step);
+  if (!run.error.empty()) throw UsageError(run.error);
+  const std::size_t last = run.last;
   plan.range = frame_range(o.frames, last);
   if (plan.kind == OutputKind::kStrip) {
     plan.clip.frames = strip_frame_indices(plan.range.first, plan.range.last, o.strip);

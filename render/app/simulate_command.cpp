@@ -10,6 +10,7 @@
 #include "render/app/atomic_file.h"
 #include "render/app/commands.h"
 #include "render/app/progress.h"
+#include "render/app/run_length.h"
 #include "render/app/scene_input.h"
 #include "render/app/sigint_guard.h"
 
@@ -48,9 +49,14 @@ int run_simulate(const SimulateOptions& o) {
   World& world = *loaded->world;
   const double duration = o.duration.value_or(loaded->scene.duration);
   const double fps = o.fps.value_or(loaded->scene.render.fps);
-  // Frames k = 0..last at t = k / fps, up to the duration (a rounding below a whole frame
-  // still counts it).
-  const auto last = static_cast<std::size_t>(std::floor(duration * fps + 1e-9));
+  // Frames k = 0..last at t = k / fps, up to the duration.
+  const RunFrames run = run_frames(duration, o.duration ? "--duration" : "world.duration", fps,
+                                   o.fps ? "--fps" : "render.fps", world.settings().min_step);
+  if (!run.error.empty()) {
+    fmt::print(stderr, "error: {}\n", run.error);
+    return kExitUsage;
+  }
+  const std::size_t last = run.last;
 
   try {
     // Every output is created before the run, so a bad path fails at once.

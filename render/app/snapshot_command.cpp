@@ -20,6 +20,7 @@
 #include "render/app/clip_render.h"
 #include "render/app/commands.h"
 #include "render/app/render_scene.h"
+#include "render/app/run_length.h"
 #include "render/app/scene_input.h"
 #include "render/app/sigint_guard.h"
 #include "render/sinks/film_strip.h"
@@ -188,7 +189,10 @@ Setup make_setup(const SnapshotOptions& o, const LoadedScene& loaded) {
   }
   const Scene& scene = loaded.scene;
   s.plan.fps = scene.render.fps;
-  const auto last = static_cast<std::size_t>(std::floor(scene.duration * s.plan.fps + 1e-9));
+  const RunFrames run = run_frames(scene.duration, "world.duration", s.plan.fps, "render.fps",
+                                   loaded.world->settings().min_step);
+  if (!run.error.empty()) throw UsageError(run.error);
+  const std::size_t last = run.last;
   // An update keeps the suite's frames and size unless told otherwise.
   s.metadata = read_metadata(s.suite, last);
   if (!o.frames.empty()) {

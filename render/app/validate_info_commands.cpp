@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/app/commands.h"
+#include "render/app/run_length.h"
 #include "render/app/scene_input.h"
 
 namespace rugosim::app {
@@ -12,6 +13,15 @@ int run_validate(const std::string& scene_path) {
   const std::optional<LoadedScene> loaded = load_scene_or_report(scene_path);
   if (!loaded) return kExitUsage;
   const World& world = *loaded->world;
+  // The run the scene asks for must be one the commands can make (run_length.h).
+  const RunFrames run =
+      run_frames(loaded->scene.duration, "/world/duration", loaded->scene.render.fps, "/render/fps",
+                 world.settings().min_step);
+  if (!run.error.empty()) {
+    fmt::print(stderr, "error: {}: {}\n{}: 1 error; the scene was not used\n", scene_path,
+               run.error, scene_path);
+    return kExitUsage;
+  }
   std::size_t fixed = 0, segments = 0;
   for (std::size_t i = 0; i < world.body_count(); ++i) {
     fixed += world.body(i).fixed() ? 1u : 0u;

@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
-# Fuzzes the scene loader for SECONDS: configures and builds the `fuzz` preset (clang,
-# libFuzzer, ASan + UBSan), seeds a scratch corpus from the scene files in the repository and
-# runs build/fuzz/tests/fuzz/fuzz_scene_loader. Exits non-zero when the fuzzer finds a crash,
-# a sanitizer report, a broken invariant, a timeout or an out-of-memory, and prints the input
-# that caused it.
+# Fuzzes the scene loader for SECONDS and the command line for half as long (at least 10 s):
+# configures and builds the `fuzz` preset (clang, libFuzzer, ASan + UBSan), seeds scratch
+# corpora (the scene files of the repository; command lines from tests/fuzz/command_lines.txt)
+# and runs build/fuzz/tests/fuzz/fuzz_scene_loader and fuzz_command_line. Exits non-zero when
+# a fuzzer finds a crash, a sanitizer report, a broken invariant, a timeout or an
+# out-of-memory, and prints the input that caused it.
 #
 # Usage: tests/fuzz/run_fuzz.sh SECONDS [libFuzzer options...]
 #
-# The corpus grows in build/fuzz/fuzz-corpus/ and is kept between runs; the repository stays
-# clean. A crashing input goes into tests/scene/fuzz_regressions/NAME.json once fixed, where
-# test_scene replays it; replay one by hand with: build/fuzz/tests/fuzz/fuzz_scene_loader FILE
+# The corpora grow in build/fuzz/fuzz-corpus*/ and are kept between runs; the repository stays
+# clean. A crashing scene goes into tests/scene/fuzz_regressions/NAME.json once fixed, where
+# test_scene replays it; a crashing command line becomes a line of
+# tests/fuzz/command_lines.txt (and a case of tests/app/number_options_test.cpp). Replay one
+# by hand with: build/fuzz/tests/fuzz/fuzz_scene_loader FILE (or fuzz_command_line FILE).
 set -euo pipefail
 
 if [ $# -lt 1 ] || ! [[ "$1" =~ ^[0-9]+$ ]] || [ "$1" -lt 1 ]; then
@@ -18,6 +21,7 @@ if [ $# -lt 1 ] || ! [[ "$1" =~ ^[0-9]+$ ]] || [ "$1" -lt 1 ]; then
 fi
 seconds=$1
 shift
+cli_seconds=$((seconds / 2 > 10 ? seconds / 2 : 10))
 
 cd "$(dirname "$0")/../.."
 root=$(pwd)
@@ -26,13 +30,13 @@ build="$root/build/fuzz"
 cmake --preset fuzz
 cmake --build --preset fuzz
 
-# Seeds: every scene file of the repository, copied so that libFuzzer, which writes new
-# inputs into its first corpus folder, never writes into the source tree.
+# Seeds are copies, so that libFuzzer, which writes new inputs into its first corpus folder,
+# never writes into the source tree.
 seeds="$build/fuzz-seeds"
-corpus="$build/fuzz-corpus"
+cli_seeds="$build/fuzz-seeds-command-line"
 artifacts="$build/fuzz-artifacts"
-rm -rf "$seeds" "$artifacts"
-mkdir -p "$seeds" "$corpus" "$artifacts"
+rm -rf "$seeds" "$cli_seeds" "$artifacts"
+mkdir -p "$seeds" "$cli_seeds" "$build/fuzz-corpus" "$build/fuzz-corpus-command-line" "$artifacts"
 n_seeds=0
 for dir in tests/scene/bad scenes tests/scene/fuzz_regressions; do
   [ -d "$dir" ] || continue
@@ -42,14 +46,31 @@ for dir in tests/scene/bad scenes tests/scene/fuzz_regressions; do
     n_seeds=$((n_seeds + 1))
   done < <(find "$dir" -type f -name '*.json' -print0)
 done
-echo "run_fuzz: $n_seeds seed files, corpus $corpus, ${seconds} s"
+# One seed per command line: its words separated by NUL bytes, as the target cuts them.
+n_cli=0
+while IFS= read -r line; do
+  [ -z "$line" ] || [[ "$line" == \#* ]] && continue
+  n_cli=$((n_cli + 1))
+  printf '%s' "$line" | tr ' ' '\0' >"$cli_seeds/line_$n_cli"
+done <tests/fuzz/command_lines.txt
 
 status=0
-UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}" \
-  "$build/tests/fuzz/fuzz_scene_loader" \
-  -max_total_time="$seconds" -max_len=8192 -timeout=10 -rss_limit_mb=2048 \
-  -dict="$root/tests/fuzz/scene.dict" -artifact_prefix="$artifacts/" -print_final_stats=1 \
-  "$@" "$corpus" "$seeds" || status=$?
+# fuzz TARGET SECONDS DICT MAX_LEN CORPUS SEEDS [libFuzzer options...]
+fuzz() {
+  local target=$1 time=$2 dict=$3 max_len=$4 corpus=$5 seed_dir=$6
+  shift 6
+  echo "run_fuzz: $target, corpus $corpus, ${time} s"
+  UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}" \
+    "$build/tests/fuzz/$target" \
+    -max_total_time="$time" -max_len="$max_len" -timeout=10 -rss_limit_mb=2048 \
+    -dict="$dict" -artifact_prefix="$artifacts/$target-" -print_final_stats=1 \
+    "$@" "$corpus" "$seed_dir" || status=$?
+}
+echo "run_fuzz: $n_seeds scene seeds, $n_cli command-line seeds"
+fuzz fuzz_scene_loader "$seconds" "$root/tests/fuzz/scene.dict" 8192 "$build/fuzz-corpus" \
+  "$seeds" "$@"
+fuzz fuzz_command_line "$cli_seconds" "$root/tests/fuzz/command_line.dict" 512 \
+  "$build/fuzz-corpus-command-line" "$cli_seeds" "$@"
 
 found=$(find "$artifacts" -type f | sort)
 if [ "$status" -ne 0 ] || [ -n "$found" ]; then
@@ -59,10 +80,11 @@ if [ "$status" -ne 0 ] || [ -n "$found" ]; then
     # cat -v escapes control bytes, so binary input cannot confuse a terminal or a CI log.
     head -c 2000 "$file" | cat -v >&2
     echo >&2
-    echo "run_fuzz: replay: $build/tests/fuzz/fuzz_scene_loader $file" >&2
-    echo "run_fuzz: once fixed: cp $file tests/scene/fuzz_regressions/NAME.json" >&2
+    target=$(basename "$file" | sed 's/-.*//')
+    echo "run_fuzz: replay: $build/tests/fuzz/$target $file" >&2
   done
   [ "$status" -ne 0 ] || status=1
   exit "$status"
 fi
-echo "run_fuzz: no crash in ${seconds} s; corpus: $(find "$corpus" -type f | wc -l) files"
+echo "run_fuzz: no crash; corpora: $(find "$build/fuzz-corpus" -type f | wc -l) scene files," \
+  "$(find "$build/fuzz-corpus-command-line" -type f | wc -l) command lines"

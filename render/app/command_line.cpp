@@ -1,0 +1,238 @@
+#include "render/app/command_line.h"
+
+#include <limits>
+
+#include "engine/core/version.h"
+#include "render/app/accuracy_options.h"
+#include "render/app/number_option.h"
+
+namespace rugosim::app {
+namespace {
+
+// Durations are bounded by the run-length checks, which know the accuracy (run_length.h).
+const NumberRange kDuration{0.0, true, std::numeric_limits<double>::infinity(), true, false, "s"};
+// The bound of the scene key render.fps (INTERFACE.md).
+const NumberRange kFps{0.0, true, 1000.0, false, false, "frames per second"};
+
+}  // namespace
+
+std::unique_ptr<CommandLine> make_command_line(int cpus) {
+  auto made = std::make_unique<CommandLine>();
+  CommandLine& c = *made;
+  // Usage errors read like the program's own ("error: ..."); set before the subcommands, which
+  // copy it.
+  c.app.failure_message([](const CLI::App* app, const CLI::Error& e) {
+    return "error: " + CLI::FailureMessage::simple(app, e);
+  });
+  c.app.set_version_flag("--version", std::string("rugosim ") + kVersion);
+  c.app.footer(
+      "Exit codes: 0 success, 1 runtime failure, 2 bad usage or invalid scene, 130 interrupted.\n"
+      "Run 'rugosim COMMAND --help' for a command's options and examples.");
+  c.app.require_subcommand(0, 1);
+
+  c.validate = c.app.add_subcommand("validate", "check a scene file, reporting every error");
+  c.validate->add_option("SCENE", c.scene, "scene file (JSON)")->required();
+  c.validate->footer("Example: rugosim validate scenes/figure12a.json");
+
+  c.info = c.app.add_subcommand(
+      "info", "per body: segments, area, mass, centroid, inertia, range of lambda, tree depth");
+  c.info->add_option("SCENE", c.scene, "scene file (JSON)")->required();
+  c.info->add_flag("--json", c.json, "print JSON: {\"bodies\": [{\"name\", \"segments\", ...}]}");
+  c.info->footer("Example: rugosim info scenes/figure09_constant.json --json");
+
+  c.simulate = c.app.add_subcommand("simulate", "simulate a scene and write telemetry");
+  c.simulate->add_option("SCENE", c.sim.scene_path, "scene file (JSON)")->required();
+  c.simulate->add_option("--duration", c.duration, "simulated time, s (default: world.duration)")
+      ->check(number_in(kDuration))
+      ->type_name("SECONDS");
+  c.simulate->add_option("--fps", c.fps, "trajectory frames per second (default: render.fps)")
+      ->check(number_in(kFps))
+      ->type_name("FPS");
+  add_accuracy_options(*c.simulate, c.sim.accuracy);
+  c.sim.threads = cpus;
+  add_threads_option(*c.simulate, c.sim.threads);
+  c.simulate->add_option("--trajectory", c.sim.trajectory_path, "write trajectory.csv here");
+  c.simulate->add_option("--events", c.sim.events_path, "write events.csv (one row per impulse)");
+  c.simulate->add_option("--stats", c.sim.stats_path, "write stats.json (step statistics)");
+  c.simulate->footer(
+      "Example: rugosim simulate scenes/figure12a.json --trajectory out/traj.csv "
+      "--events out/events.csv --stats out/stats.json\n"
+      "Files are written atomically: on an error none is created or truncated; on Ctrl-C the "
+      "frames simulated so far are written and the exit code is 130.");
+
+  c.render = c.app.add_subcommand(
+      "render", "render a scene off-screen to an MP4 clip, a PNG sequence or a film strip");
+  c.render->add_option("SCENE", c.render_options.scene_path, "scene file (JSON)")->required();
+  c.render
+      ->add_option("-o,--output", c.render_options.output,
+                   "clip.mp4, a PNG pattern like out/f_%04d.png, or with --strip one PNG")
+      ->required()
+      ->type_name("OUT");
+  c.render
+      ->add_option("--format", c.render_options.format,
+                   "mp4 or png (default: from OUT: .mp4, or a pattern with %d)")
+      ->check(CLI::IsMember({"mp4", "png"}));
+  c.render
+      ->add_option("--frames", c.render_options.frames,
+                   "frames A:B, inclusive (default: 0 to duration × fps)")
+      ->type_name("A:B");
+  c.render->add_option("--size", c.render_options.size, "frame size (default: render.size)")
+      ->type_name("WxH");
+  c.render->add_option("--fps", c.render_fps, "frames per second (default: render.fps)")
+      ->check(number_in(kFps))
+      ->type_name("FPS");
+  c.render
+      ->add_option("--duration", c.render_duration, "simulated time, s (default: world.duration)")
+      ->check(number_in(kDuration))
+      ->type_name("SECONDS");
+  add_accuracy_options(*c.render, c.render_options.accuracy);
+  c.render_options.threads = cpus;
+  add_threads_option(*c.render, c.render_options.threads);
+  c.render->add_option("--crf", c.render_options.crf, "MP4: x264 constant rate factor 0..51")
+      ->check(number_in({0, false, 51, false, true, ""}))
+      ->type_name("N")
+      ->capture_default_str();
+  c.render->add_option("--preset", c.render_options.preset, "MP4: x264 preset")
+      ->capture_default_str();
+  c.render->add_flag("-y", c.render_options.overwrite, "overwrite OUT if it exists");
+  c.render->add_option("--backend", c.render_options.backend, "OpenGL backend: osmesa or egl")
+      ->capture_default_str();
+  c.render
+      ->add_option("--aa", c.render_options.anti_aliasing,
+                   "anti-aliasing: shader (edge coverage in the shaders), msaa (4x) or none")
+      ->capture_default_str();
+  c.render
+      ->add_option("--overlay", c.overlays,
+                   "overlays, replacing render.overlays: rugosity, contacts, velocity (comma "
+                   "separated; \"none\" for none)")
+      ->delimiter(',')
+      ->type_name("LIST");
+  c.render
+      ->add_option("--strip", c.render_options.strip,
+                   "write one PNG of N frames spread over the clip, side by side")
+      ->check(number_in({1, false, 1000, false, true, "frames"}))
+      ->type_name("N");
+  c.render
+      ->add_option("--gl-threads", c.gl_threads,
+                   "llvmpipe rasteriser threads (LP_NUM_THREADS); default 0: the render thread "
+                   "alone, leaving the cores to the encoder")
+      ->check(number_in({0, false, 64, false, true, ""}))
+      ->type_name("N");
+  c.render
+      ->add_option("--png-workers", c.render_options.png_workers,
+                   "PNG sequence: threads compressing frames")
+      ->check(number_in({1, false, 64, false, true, ""}))
+      ->type_name("N")
+      ->capture_default_str();
+  c.render->add_option("--png-level", c.render_options.png_level, "PNG: zlib level 0..9")
+      ->check(number_in({0, false, 9, false, true, ""}))
+      ->type_name("N")
+      ->capture_default_str();
+  c.render
+      ->add_option("--png-filter", c.render_options.png_filter,
+                   "PNG: row filter none, sub, up, average, paeth or all (adaptive)")
+      ->capture_default_str();
+  c.render->footer(
+      "Examples:\n"
+      "  rugosim render scenes/figure12a.json -o out/figure12a.mp4\n"
+      "  rugosim render scenes/figure12a.json -o out/frames/f_%04d.png --frames 0:59 --size "
+      "1920x1080\n"
+      "  rugosim render scenes/figure12b.json -o out/strip.png --strip 6 --size 480x360\n"
+      "An existing OUT is kept unless -y is given. On Ctrl-C the frame in hand is finished, the "
+      "output is closed (a playable MP4) and the exit code is 130.");
+
+  c.snapshot = c.app.add_subcommand(
+      "snapshot", "visual regression: render frames and compare them with golden PNGs");
+  c.snapshot->add_option("SCENE", c.snap.scene_path, "scene file (JSON)")->required();
+  c.snapshot
+      ->add_option("--golden", c.snap.golden_dir,
+                   "folder of the goldens: SCENE-STEM_FRAME.png and SCENE-STEM.json")
+      ->required()
+      ->type_name("DIR");
+  c.snapshot
+      ->add_option("--frames", c.snap.frames,
+                   "frames to check: 0,30,60 or ranges A:B, A:B:STEP (default: the goldens' "
+                   "frames, or 4 spread over the clip)")
+      ->type_name("LIST");
+  c.snapshot
+      ->add_option("--output", c.snap.output_dir,
+                   "folder for a failure's actual and diff images and summary (default: "
+                   "the golden folder), e.g. to upload as CI artifacts")
+      ->type_name("DIR");
+  c.snapshot->add_flag("--update", c.snap.update, "write the goldens (and their .json) instead");
+  c.snapshot->add_flag("--exact", c.snap.exact, "fail on any difference");
+  c.snapshot
+      ->add_option("--threshold", c.snap.threshold,
+                   "a pixel differs when a channel differs by more than this (0..255)")
+      ->check(number_in({0, false, 255, false, true, ""}))
+      ->type_name("N")
+      ->capture_default_str();
+  c.snapshot
+      ->add_option("--max-share", c.snap.max_share,
+                   "fail when more than this share of pixels differ (0..1)")
+      ->check(number_in({0, false, 1, false, false, ""}))
+      ->type_name("X")
+      ->capture_default_str();
+  c.snapshot->add_flag("--json", c.snap.json, "print the comparison as JSON on stdout");
+  c.snapshot
+      ->add_option("--size", c.snap.size, "frame size (default: the goldens', or render.size)")
+      ->type_name("WxH");
+  c.snapshot->add_option("--backend", c.snap.backend, "OpenGL backend: osmesa or egl")
+      ->capture_default_str();
+  c.snapshot->add_option("--aa", c.snap.anti_aliasing, "anti-aliasing: shader, msaa or none")
+      ->capture_default_str();
+  add_accuracy_options(*c.snapshot, c.snap.accuracy);
+  c.snap.threads = cpus;
+  add_threads_option(*c.snapshot, c.snap.threads);
+  c.snapshot->footer(
+      "Examples:\n"
+      "  rugosim snapshot scenes/figure12a.json --golden tests/goldens --size 320x180 --update\n"
+      "  rugosim snapshot scenes/figure12a.json --golden tests/goldens --json\n"
+      "Exit 0 when every frame matches, 1 when one differs or is missing (NAME_FRAME.actual.png, "
+      "NAME_FRAME.diff.png and NAME.summary.txt are written beside the goldens), 2 for bad "
+      "usage, a bad scene or an unreadable golden.");
+
+  c.plot = c.app.add_subcommand(
+      "plot", "draw friction per collision event and velocity over time as PNG (gnuplot)");
+  c.plot
+      ->add_option("--events", c.plot_options.events_path,
+                   "events.csv: draw DIR/friction.png, mu of each collision over time")
+      ->type_name("FILE.csv");
+  c.plot
+      ->add_option("--trajectory", c.plot_options.trajectory_path,
+                   "trajectory.csv: draw DIR/velocity.png, speed |v| and vx over time")
+      ->type_name("FILE.csv");
+  c.plot->add_option("-o,--output", c.plot_options.output_dir, "output folder (created if missing)")
+      ->required()
+      ->type_name("DIR");
+  c.plot
+      ->add_option("--bodies", c.plot_options.bodies,
+                   "bodies of the velocity plot, NAME,NAME... (default: all; quote a name that "
+                   "holds a comma as in CSV)")
+      ->type_name("NAME,NAME...");
+  c.plot->add_flag("--no-contacts", c.no_contacts,
+                   "leave out the resting-contact micro-collisions (kind \"contact\")");
+  c.plot->footer(
+      "Example: rugosim plot --events out/events.csv --trajectory out/traj.csv -o out/plots "
+      "--bodies 'pebble,\"disk, small\"'\n"
+      "At least one of --events and --trajectory is needed. Requires gnuplot on PATH (Debian: "
+      "gnuplot-nox). PNGs are written atomically; a bad CSV leaves none (exit 2).");
+
+  return made;
+}
+
+void finish_parse(CommandLine& c) {
+  if (c.simulate->count("--duration") > 0) c.sim.duration = c.duration;
+  if (c.simulate->count("--fps") > 0) c.sim.fps = c.fps;
+  if (c.render->count("--fps") > 0) c.render_options.fps = c.render_fps;
+  if (c.render->count("--duration") > 0) c.render_options.duration = c.render_duration;
+  if (c.render->count("--gl-threads") > 0) c.render_options.gl_threads = c.gl_threads;
+  if (c.render->count("--overlay") > 0) {
+    std::vector<std::string> overlays = c.overlays;
+    std::erase(overlays, std::string("none"));
+    c.render_options.overlays = overlays;
+  }
+  c.plot_options.contacts = !c.no_contacts;
+}
+
+}  // namespace rugosim::app
