@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <system_error>
 
+#include <nlohmann/json.hpp>
+
 namespace rugosim {
 namespace {
 
@@ -75,7 +77,8 @@ void append_event_row(std::string& out, const World& world, const ContactEvent& 
   out.push_back('\n');
 }
 
-std::string stats_json(const StepStats& s, double wall_time, const Accuracy* accuracy) {
+std::string stats_json(const StepStats& s, double wall_time, const Accuracy* accuracy,
+                       const World* world) {
   std::string out = "{\n";
   auto counter = [&](std::string_view key, std::uint64_t value) {
     out.append("  \"").append(key).append("\": ");
@@ -112,6 +115,16 @@ std::string stats_json(const StepStats& s, double wall_time, const Accuracy* acc
       append_number(out, knob.get(*accuracy));
       separator = ", ";
     }
+    out.append("}");
+  }
+  if (world != nullptr && world->first_crossing()) {
+    const CrossingRecord& c = *world->first_crossing();
+    out.append(",\n  \"first_crossing\": {\"time\": ");
+    append_number(out, c.time);
+    out.append(", \"body_a\": ").append(nlohmann::json(world->name(c.body_a)).dump());
+    out.append(", \"body_b\": ").append(nlohmann::json(world->name(c.body_b)).dump());
+    out.append(", \"depth\": ");
+    append_number(out, c.depth);
     out.append("}");
   }
   out.append("\n}\n");

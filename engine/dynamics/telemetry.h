@@ -36,8 +36,10 @@ void append_trajectory_rows(std::string& out, const World& world, std::size_t fr
 void append_event_row(std::string& out, const World& world, const ContactEvent& event);
 
 // stats.json: every StepStats counter, sim_time and wall_time (s), one key per line, then, when
-// given, "accuracy": the knobs the run used ({"max_step": 0.001, ...}, accuracy.h's keys).
-std::string stats_json(const StepStats& stats, double wall_time,
-                       const Accuracy* accuracy = nullptr);
+// given, "accuracy": the knobs the run used ({"max_step": 0.001, ...}, accuracy.h's keys), and
+// when `world` is given and a crossing was accepted, "first_crossing": {"time", "body_a",
+// "body_b", "depth"} (World::first_crossing, bodies by name).
+std::string stats_json(const StepStats& stats, double wall_time, const Accuracy* accuracy = nullptr,
+                       const World* world = nullptr);
 
 }  // namespace rugosim

@@ -12,6 +12,7 @@
 #include "engine/core/disjoint_sets.h"
 #include "engine/dynamics/contact_resolution.h"
 #include "engine/dynamics/free_flight.h"
+#include "engine/dynamics/overlap_depth.h"
 
 namespace rugosim {
 namespace {
@@ -185,12 +186,25 @@ double World::back_off(double dt_full) {
   return 0.0;
 }
 
+void World::record_first_crossing(const std::vector<ContactManifold>& manifolds, double time) {
+  for (const ContactManifold& m : manifolds) {
+    if (m.state() != PairState::kIntersecting) continue;
+    const std::size_t a = std::min(m.body_a, m.body_b);
+    const std::size_t b = std::max(m.body_a, m.body_b);
+    first_crossing_ = CrossingRecord{time, a, b, sampled_overlap_depth(bodies_[a], bodies_[b])};
+    return;
+  }
+}
+
 void World::resolve(const std::vector<ContactManifold>& manifolds, double time) {
   const ResolutionSettings resolution{settings_.gravity, settings_.friction_gain,
                                       settings_.max_resolution_passes, settings_.max_step,
                                       settings_.resolved_gap_fraction};
   ++stats_.steps;
-  if (any_crossing(manifolds)) ++stats_.crossings;
+  if (any_crossing(manifolds)) {
+    ++stats_.crossings;
+    if (!first_crossing_) record_first_crossing(manifolds, time);
+  }
   stats_.islands_woken += sleep_.wake_touched(bodies_, manifolds, time);
   const auto start = std::chrono::steady_clock::now();
   const ResolutionCounts counts = resolver_.resolve(bodies_, manifolds, resolution, time,

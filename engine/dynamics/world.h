@@ -46,6 +46,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,15 @@
 #include "engine/dynamics/step_stats.h"
 
 namespace rugosim {
+
+// The first accepted state in which two boundaries cross (StepStats::crossings > 0): when and
+// where, for the warning of the commands and stats.json.
+struct CrossingRecord {
+  double time = 0.0;       // s, world time of the state
+  std::size_t body_a = 0;  // the crossing pair first in the state's order (body_a < body_b)
+  std::size_t body_b = 0;
+  double depth = 0.0;  // m, sampled_overlap_depth of the pair (overlap_depth.h)
+};
 
 struct WorldSettings {
   Vec2 gravity = Vec2(0.0, -9.81);  // m/s²
@@ -129,6 +139,8 @@ class World {
   void advance_to(double t);
 
   const StepStats& stats() const { return stats_; }
+  // The first accepted crossing state, if any: none unless stats().crossings > 0.
+  const std::optional<CrossingRecord>& first_crossing() const { return first_crossing_; }
   const StepProfile& profile() const { return profile_; }
   // Every impulse since construction or the last clear_events(), in the order applied.
   const std::vector<ContactEvent>& events() const { return events_; }
@@ -162,6 +174,8 @@ class World {
   double back_off(double dt_full);
   // Impulses for the manifolds of an accepted state at `time` (s), and the step statistics.
   void resolve(const std::vector<ContactManifold>& manifolds, double time);
+  // Sets first_crossing_ from the first intersecting pair of `manifolds` (an accepted state).
+  void record_first_crossing(const std::vector<ContactManifold>& manifolds, double time);
 
   WorldSettings settings_;
   std::vector<RigidBody> bodies_;
@@ -184,6 +198,7 @@ class World {
   std::vector<ContactEvent> events_;
   SleepTracker sleep_;
   StepStats stats_;
+  std::optional<CrossingRecord> first_crossing_;
   StepProfile profile_;
   double time_ = 0.0;  // s
   int consecutive_fallbacks_ = 0;

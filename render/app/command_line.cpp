@@ -51,6 +51,8 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
   add_accuracy_options(*c.simulate, c.sim.accuracy);
   c.sim.threads = cpus;
   add_threads_option(*c.simulate, c.sim.threads);
+  c.simulate->add_flag("--strict", c.sim.strict,
+                       "exit 1 when the run had to accept a crossing state (for CI)");
   c.simulate->add_option("--trajectory", c.sim.trajectory_path, "write trajectory.csv here");
   c.simulate->add_option("--events", c.sim.events_path, "write events.csv (one row per impulse)");
   c.simulate->add_option("--stats", c.sim.stats_path, "write stats.json (step statistics)");
@@ -88,6 +90,8 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
   add_accuracy_options(*c.render, c.render_options.accuracy);
   c.render_options.threads = cpus;
   add_threads_option(*c.render, c.render_options.threads);
+  c.render->add_flag("--strict", c.render_options.strict,
+                     "exit 1 when the run had to accept a crossing state (for CI)");
   c.render->add_option("--crf", c.render_options.crf, "MP4: x264 constant rate factor 0..51")
       ->check(number_in({0, false, 51, false, true, ""}))
       ->type_name("N")

@@ -23,6 +23,7 @@ struct SimulateOptions {
   std::optional<double> fps;       // overrides render.fps: the trajectory's frame rate
   AccuracyOverride accuracy;
   int threads = 1;              // of collision detection (--threads)
+  bool strict = false;          // exit 1 when a crossing state was accepted (crossing_report.h)
   std::string trajectory_path;  // empty: not written
   std::string events_path;
   std::string stats_path;
@@ -41,7 +42,8 @@ struct RenderOptions {
   std::optional<double> fps;
   std::optional<double> duration;
   AccuracyOverride accuracy;
-  int threads = 1;  // of collision detection (--threads)
+  int threads = 1;      // of collision detection (--threads)
+  bool strict = false;  // exit 1 when a crossing state was accepted (crossing_report.h)
   int crf = 18;
   std::string preset = "medium";
   bool overwrite = false;  // -y

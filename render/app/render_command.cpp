@@ -13,6 +13,7 @@
 
 #include "render/app/clip_render.h"
 #include "render/app/commands.h"
+#include "render/app/crossing_report.h"
 #include "render/app/frame_memory.h"
 #include "render/app/progress.h"
 #include "render/app/render_scene.h"
@@ -257,13 +258,16 @@ int run_render(const RenderOptions& o) {
           compose_film_strip(strip, std::max(2, plan.clip.width / 160), {255, 255, 255, 255}),
           plan.png);
     }
+    // The simulation runs on the pipeline's thread: its first crossing is told here, after it.
+    CrossingWatch().check(*loaded->world, stderr);
     fmt::print(stderr, "{}: {} frame{} {} {} in {:.3g} s ({:.3g} frames/s)\n",
                result.interrupted ? "interrupted" : "done", result.frames,
                result.frames == 1 ? "" : "s",
                plan.kind == OutputKind::kStrip ? "in the strip" : "written to", o.output,
                progress.wall_seconds(),
                static_cast<double>(result.frames) / std::max(progress.wall_seconds(), 1e-9));
-    return result.interrupted ? kExitInterrupted : kExitOk;
+    return strict_exit_code(*loaded->world, o.strict,
+                            result.interrupted ? kExitInterrupted : kExitOk, stderr);
   } catch (const std::invalid_argument& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kExitUsage;

@@ -9,6 +9,7 @@
 #include "engine/scene/scene_world.h"
 #include "render/app/atomic_file.h"
 #include "render/app/commands.h"
+#include "render/app/crossing_report.h"
 #include "render/app/progress.h"
 #include "render/app/run_length.h"
 #include "render/app/scene_input.h"
@@ -71,10 +72,12 @@ int run_simulate(const SimulateOptions& o) {
     if (std::string* e = events.buffer()) e->append(kEventsCsvHeader);
 
     const SigintGuard sigint;
+    CrossingWatch crossings;
     Progress progress(static_cast<double>(last) / fps, stderr);
     std::size_t frame = 1;
     for (; frame <= last && !sigint.interrupted(); ++frame) {
       world.advance_to(static_cast<double>(frame) / fps);
+      crossings.check(world, stderr);
       if (std::string* t = trajectory.buffer()) append_trajectory_rows(*t, world, frame);
       if (std::string* e = events.buffer()) {
         for (const ContactEvent& event : world.events())
@@ -91,7 +94,7 @@ int run_simulate(const SimulateOptions& o) {
     events.commit();
     if (stats_file) {
       const Accuracy accuracy = scene_accuracy(loaded->scene);
-      stats_file->write(stats_json(world.stats(), wall, &accuracy));
+      stats_file->write(stats_json(world.stats(), wall, &accuracy, &world));
       stats_file->commit();
     }
     const StepStats& s = world.stats();
@@ -100,7 +103,8 @@ int run_simulate(const SimulateOptions& o) {
                "{} collisions, {} contacts, {} fallbacks, {} crossings\n",
                sigint.interrupted() ? "interrupted" : "done", world.time(), wall, frame, s.steps,
                s.bisections, s.collisions, s.contacts, s.fallbacks, s.crossings);
-    return sigint.interrupted() ? kExitInterrupted : kExitOk;
+    return strict_exit_code(world, o.strict, sigint.interrupted() ? kExitInterrupted : kExitOk,
+                            stderr);
   } catch (const std::runtime_error& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kExitFailure;

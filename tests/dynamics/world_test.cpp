@@ -298,6 +298,7 @@ TEST(World, IdenticalRunsAreBitIdentical) {
   EXPECT_EQ(first.stats().steps, second.stats().steps);
   EXPECT_EQ(first.stats().bisections, second.stats().bisections);
   EXPECT_EQ(first.stats().crossings, 0u);
+  EXPECT_FALSE(first.first_crossing());
   RecordProperty("events", std::to_string(first.events().size()));
   RecordProperty("fallbacks", std::to_string(first.stats().fallbacks));
 }
@@ -320,6 +321,14 @@ TEST(World, StartingInsideEachOtherEndsThroughCountedFallbacks) {
                 world.stats().pass_fallbacks + world.stats().stalled_steps);
   // The min-step fallbacks stay in a state that already crosses: those count too.
   EXPECT_GE(world.stats().crossings, world.stats().crossing_fallbacks);
+  // The first accepted crossing is recorded for the commands' warning: the pair, and how deep
+  // (disks of radius 0.5 with centres 0.6 apart reach 0.4 into each other).
+  ASSERT_TRUE(world.first_crossing());
+  EXPECT_EQ(world.first_crossing()->body_a, 0u);
+  EXPECT_EQ(world.first_crossing()->body_b, 1u);
+  EXPECT_GE(world.first_crossing()->time, 0.0);
+  EXPECT_LE(world.first_crossing()->time, 0.01);
+  EXPECT_NEAR(world.first_crossing()->depth, 0.4, 0.01);
 }
 
 // A step cut short against tunnelling still ends every advance exactly at its target, even
