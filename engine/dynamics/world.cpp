@@ -374,7 +374,7 @@ void World::advance_to(double t) {
   const double detection = profile_.detection, resolution = profile_.resolution;
   moving_.resize(bodies_.size(), 0);
   start_.resize(bodies_.size());
-  while (time_ < t) {
+  while (time_ < t && !stop_requested()) {
     if (!sleep_.any_awake_mover(bodies_)) {
       // Nothing can move until something is woken from outside: no steps to take.
       time_ = t;

@@ -44,6 +44,7 @@
 // settings give bit-identical states, events and stats.
 #pragma once
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -135,8 +136,16 @@ class World {
 
   double time() const { return time_; }  // s
 
-  // Advances to time t (s) by internal steps; nothing happens when t <= time().
+  // Advances to time t (s) by internal steps; nothing happens when t <= time(). Returns early,
+  // after the step in hand and short of t, when the stop flag is set (see set_stop_flag).
   void advance_to(double t);
+
+  // A flag (e.g. set by a SIGINT handler) that advance_to polls before every step, so that a
+  // run that crawls through many short steps still stops within one step; the World is left
+  // in the accepted state of its last step. Null: never stop. Not a setting of the
+  // simulation: it never changes a step that is taken.
+  void set_stop_flag(const std::atomic<bool>* flag) { stop_ = flag; }
+  bool stop_requested() const { return stop_ != nullptr && stop_->load(std::memory_order_relaxed); }
 
   const StepStats& stats() const { return stats_; }
   // The first accepted crossing state, if any: none unless stats().crossings > 0.
@@ -199,6 +208,7 @@ class World {
   SleepTracker sleep_;
   StepStats stats_;
   std::optional<CrossingRecord> first_crossing_;
+  const std::atomic<bool>* stop_ = nullptr;
   StepProfile profile_;
   double time_ = 0.0;  // s
   int consecutive_fallbacks_ = 0;

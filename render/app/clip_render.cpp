@@ -36,6 +36,8 @@ class ClipSource {
   ClipSource(World& world, const ClipPlan& plan, std::optional<Camera> camera,
              const std::atomic<bool>* interrupted)
       : world_(world), plan_(plan), automatic_(!camera), interrupted_(interrupted) {
+    // Every step polls the flag: a run crawling through short steps stops within one.
+    world_.set_stop_flag(interrupted);
     if (camera) camera_.set_value(camera);
   }
 
@@ -60,6 +62,7 @@ class ClipSource {
     for (; reached_ < frame; ++reached_) {
       world_.clear_events();
       world_.advance_to(static_cast<double>(reached_ + 1) / plan_.fps);
+      if (world_.stop_requested()) return std::nullopt;  // stopped short of the frame's time
     }
     FrameSnapshot snapshot = take_snapshot(world_, frame);
     world_.clear_events();
@@ -70,12 +73,13 @@ class ClipSource {
     simulated_ = true;
     try {
       while (std::optional<FrameSnapshot> snapshot = simulate_next()) {
-        if (interrupted_ != nullptr && interrupted_->load()) {
-          clip_.clear();
-          camera_.set_value(std::nullopt);
-          return;
-        }
+        if (interrupted_ != nullptr && interrupted_->load()) break;
         clip_.push_back(std::move(*snapshot));
+      }
+      if (interrupted_ != nullptr && interrupted_->load()) {
+        clip_.clear();
+        camera_.set_value(std::nullopt);
+        return;
       }
       camera_.set_value(fit_clip_camera(world_, clip_, plan_.width, plan_.height));
     } catch (...) {

@@ -12,8 +12,8 @@ std::string crossing_warning(const World& world) {
   const CrossingRecord& c = *world.first_crossing();
   // The depth comes from sampled boundaries (overlap_depth.h): flat faces crossing by a
   // rounding show none.
-  const std::string depth = c.depth > 0.0 ? number_text(c.depth) + " m deep"
-                                          : "by less than the sampled boundaries show";
+  const std::string depth =
+      c.depth > 0.0 ? number_text(c.depth) + " m deep" : "by less than the sampled boundaries show";
   return fmt::format(
       "warning: t = {} s: bodies \"{}\" and \"{}\" cross, {}: a bounded loop ran out and its "
       "fallback accepted a crossing state (stats.json: crossings, first_crossing; --strict "

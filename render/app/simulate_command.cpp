@@ -72,12 +72,14 @@ int run_simulate(const SimulateOptions& o) {
     if (std::string* e = events.buffer()) e->append(kEventsCsvHeader);
 
     const SigintGuard sigint;
+    world.set_stop_flag(&SigintGuard::interrupted());
     CrossingWatch crossings;
     Progress progress(static_cast<double>(last) / fps, stderr);
     std::size_t frame = 1;
     for (; frame <= last && !sigint.interrupted(); ++frame) {
       world.advance_to(static_cast<double>(frame) / fps);
       crossings.check(world, stderr);
+      if (sigint.interrupted()) break;  // the World stopped short of the frame's time
       if (std::string* t = trajectory.buffer()) append_trajectory_rows(*t, world, frame);
       if (std::string* e = events.buffer()) {
         for (const ContactEvent& event : world.events())
