@@ -13,6 +13,13 @@ Aabb grown(Aabb box, double by) {
   return box;
 }
 
+// m/s: a bound on how fast any boundary point of a moves relative to any boundary point of b.
+double relative_boundary_speed(const RigidBody& a, const RigidBody& b) {
+  return (a.state().velocity - b.state().velocity).norm() +
+         std::abs(a.state().angular_velocity) * a.bounding_radius() +
+         std::abs(b.state().angular_velocity) * b.bounding_radius();
+}
+
 }  // namespace
 
 bool StepPlanner::nothing_can_meet(std::span<const RigidBody> bodies,
@@ -74,8 +81,12 @@ double StepPlanner::tunnel_free(std::span<const RigidBody> bodies,
     const std::size_t i = moves[pair.a] != 0 ? pair.a : pair.b;
     const std::size_t j = i == pair.a ? pair.b : pair.a;
     const bool j_moves = moves[j] != 0;
-    // Relative motion: speeds add, and gravity moves both alike when both move.
-    const double a = bodies[i].boundary_speed() + (j_moves ? bodies[j].boundary_speed() : 0.0);
+    // Relative motion: any two boundary points of i and j part or approach at most at
+    // |v_i − v_j| + |ω_i|·r_i + |ω_j|·r_j (u_i − u_j = v_i − v_j + ω_i × r_i − ω_j × r_j), and
+    // gravity moves both alike when both move. Bodies falling together, however fast, do not
+    // hold each other to short steps.
+    const double a =
+        j_moves ? relative_boundary_speed(bodies[i], bodies[j]) : bodies[i].boundary_speed();
     const double b = j_moves ? 0.0 : 0.5 * g;
     const double reach = a * h + b * h * h;
     const double limit = 0.5 * std::min(bodies[i].thickness(), bodies[j].thickness());

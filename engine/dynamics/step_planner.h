@@ -11,7 +11,9 @@
 //
 // Short enough not to tunnel: two bodies whose boxes could meet within the step move, relative
 // to each other, at most half the thinner one's thickness (RigidBody::thickness), so that the
-// crossing check at the step's end sees any overlap before a body can get through. The pairs
+// crossing check at the step's end sees any overlap before a body can get through. Relative
+// motion of two movers is bounded by |v_i − v_j| + |ω_i|·r_i + |ω_j|·r_j (gravity moves both
+// alike); of a mover and a fixed or sleeping body by the mover's |v| + |ω|·r and ½|g|·h². The pairs
 // are found by the same broad phase over boxes grown by each body's own reach, so the cost is
 // that of a sweep, not of all pairs.
 #pragma once
