@@ -106,13 +106,15 @@ SampledBody sample_body(const RigidBody& body) {
   s.polygon = sampled_boundary(body, kContainmentSamples);
   const PeriodicBSpline& curve = body.curve();
   double stray = 0.0;
+  const auto per_segment = static_cast<std::size_t>(kContainmentSamples);
   for (std::size_t j = 0; j < curve.size(); ++j) {
-    for (int k = 0; k < kContainmentSamples; ++k) {
+    for (std::size_t k = 0; k < per_segment; ++k) {
       // The curve between two samples against the chord: its middle is the farthest, closely
       // enough for the cubic pieces between samples 1/16 of a segment apart (doubled below).
-      const Vec2 u = s.polygon[j * kContainmentSamples + k];
-      const Vec2 v = s.polygon[(j * kContainmentSamples + k + 1) % s.polygon.size()];
-      const Vec2 mid = body.world_point(curve.point(j, (k + 0.5) / kContainmentSamples));
+      const Vec2 u = s.polygon[j * per_segment + k];
+      const Vec2 v = s.polygon[(j * per_segment + k + 1) % s.polygon.size()];
+      const double t = (static_cast<double>(k) + 0.5) / kContainmentSamples;
+      const Vec2 mid = body.world_point(curve.point(j, t));
       stray = std::max(stray, (mid - 0.5 * (u + v)).norm());
     }
   }
