@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace rugosim {
 
@@ -37,7 +38,7 @@ bool inside_polygon(const std::vector<Vec2>& polygon, const Vec2& p) {
 }
 
 double distance_to_polygon(const std::vector<Vec2>& polygon, const Vec2& p) {
-  double best = INFINITY;
+  double best = std::numeric_limits<double>::infinity();
   const std::size_t n = polygon.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Vec2& u = polygon[i];
