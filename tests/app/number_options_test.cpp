@@ -9,7 +9,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <string>
@@ -104,6 +103,16 @@ class NumberOptions : public ::testing::Test {
   fs::path dir_;
 };
 
+// The longest run of decimal digits in `text` (CLI11 wrote DBL_MAX with 309 of them).
+std::size_t longest_digit_run(const std::string& text) {
+  std::size_t longest = 0, run = 0;
+  for (const char ch : text) {
+    run = (ch >= '0' && ch <= '9') ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  return longest;
+}
+
 struct CommandRun {
   int exit_code = -1;
   std::string stderr_text;
@@ -175,7 +184,7 @@ TEST_F(NumberOptions, EveryBadNumberExits2WithAMessageAndWritesNothing) {
       std::string without_value = r.stderr_text;
       for (std::size_t at; (at = without_value.find(value)) != std::string::npos;)
         without_value.erase(at, value.size());
-      EXPECT_FALSE(std::regex_search(without_value, std::regex("[0-9]{20}")));
+      EXPECT_LT(longest_digit_run(without_value), 20u);
       EXPECT_EQ(r.stderr_text.find("Could not convert"), std::string::npos);
       EXPECT_FALSE(fs::exists(output()));
       EXPECT_FALSE(fs::exists(dir_ / "goldens"));
