@@ -1,6 +1,5 @@
 #include "render/app/number_option.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 
@@ -36,7 +35,6 @@ std::optional<double> parse_number(const std::string& text, bool integer) {
   }
   // strtod also reads "nan", "inf" and hexadecimal: only decimal notation is a number here.
   if (text.find_first_not_of("0123456789+-.eE") != std::string::npos) return std::nullopt;
-  errno = 0;
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);
   if (end != text.c_str() + text.size()) return std::nullopt;

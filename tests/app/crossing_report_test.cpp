@@ -5,9 +5,7 @@
 // writing its files; render does the same. A clean run says nothing and --strict keeps exit 0.
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -34,14 +32,10 @@ class CrossingReport : public ::testing::Test {
 
   // Runs `rugosim ARGS`; the exit code, stderr in err_.
   int run(const std::string& args) {
-    const fs::path err = dir_ / "stderr.txt";
-    const int status =
-        std::system((program() + " " + args + " >/dev/null 2>" + err.string()).c_str());
-    std::ifstream in(err);
-    std::ostringstream text;
-    text << in.rdbuf();
-    err_ = text.str();
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const rugosim::testing::CommandRun r =
+        rugosim::testing::run_command_line(program() + " " + args, dir_ / "stderr.txt");
+    err_ = r.stderr_text;
+    return r.exit_code;
   }
   std::string scene(const std::string& name) const {
     return (source_dir() / "scenes" / (name + ".json")).string();

@@ -5,14 +5,11 @@
 // legitimate, does what it says (exit 0). The table is checked against the program's own
 // list of options, so a numeric option added later without an entry fails here.
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <set>
-#include <sstream>
 #include <string>
-#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -25,7 +22,9 @@
 namespace {
 
 namespace fs = std::filesystem;
+using rugosim::testing::CommandRun;
 using rugosim::testing::program;
+using rugosim::testing::run_command_line;
 using rugosim::testing::source_dir;
 
 const std::vector<std::string> kValues = {"nan", "inf",   "-inf",   "0",
@@ -113,27 +112,6 @@ std::size_t longest_digit_run(const std::string& text) {
   return longest;
 }
 
-struct CommandRun {
-  int exit_code = -1;
-  std::string stderr_text;
-  double seconds = 0.0;
-};
-
-CommandRun run(const std::string& line, const fs::path& stderr_file) {
-  CommandRun r;
-  const auto start = std::chrono::steady_clock::now();
-  // timeout(1) turns a hang into exit 124 instead of a stuck test.
-  const int status =
-      std::system(("timeout 20 " + line + " >/dev/null 2>" + stderr_file.string()).c_str());
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(stderr_file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  r.stderr_text = text.str();
-  return r;
-}
-
 TEST_F(NumberOptions, TableCoversEveryNumericOptionOfTheProgram) {
   const auto cli = rugosim::app::make_command_line(2);
   std::set<std::pair<std::string, std::string>> in_program;
@@ -165,7 +143,7 @@ TEST_F(NumberOptions, EveryBadNumberExits2WithAMessageAndWritesNothing) {
       const std::string line = command_line(o, value);
       fs::remove_all(dir_ / "goldens");
       fs::remove(output());
-      const CommandRun r = run(line, dir_ / "stderr.txt");
+      const CommandRun r = run_command_line(line, dir_ / "stderr.txt");
       SCOPED_TRACE(line + "\n" + r.stderr_text);
       if (o.legitimate.count(v) > 0) {
         EXPECT_EQ(r.exit_code, 0);
@@ -200,14 +178,14 @@ TEST_F(NumberOptions, CompositeNumbersAreRefusedToo) {
   const std::string base = program() + " render " + scene + " -y -o " + output().string() + " ";
   for (const std::string& size : std::vector<std::string>{
            "nanx64", "infx64", "0x0", "-1x64", "1e300x64", "64x1e-300", kPast64Bits + "x64"}) {
-    const CommandRun r = run(base + "--size '" + size + "'", dir_ / "stderr.txt");
+    const CommandRun r = run_command_line(base + "--size '" + size + "'", dir_ / "stderr.txt");
     SCOPED_TRACE(size + ": " + r.stderr_text);
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.stderr_text.find("size"), std::string::npos);
   }
   for (const std::string& frames : std::vector<std::string>{"0:nan", "inf:5", "0:-1", "0:1e300",
                                                             "1e-300:2", "0:" + kPast64Bits}) {
-    const CommandRun r = run(base + "--frames '" + frames + "'", dir_ / "stderr.txt");
+    const CommandRun r = run_command_line(base + "--frames '" + frames + "'", dir_ / "stderr.txt");
     SCOPED_TRACE(frames + ": " + r.stderr_text);
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.stderr_text.find("--frames"), std::string::npos);

@@ -2,9 +2,13 @@
 // RUGOSIM_PROGRAM and RUGOSIM_SOURCE_DIR (tests/CMakeLists.txt).
 #pragma once
 
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
+#include <sys/wait.h>
 
 namespace rugosim::testing {
 
@@ -16,6 +20,30 @@ inline std::filesystem::path source_dir() {
 inline std::string program() {
   const char* p = std::getenv("RUGOSIM_PROGRAM");
   return p != nullptr ? p : "rugosim";
+}
+
+// A shell command line run to its end, stdout discarded.
+struct CommandRun {
+  int exit_code = -1;       // -1 when it did not exit normally
+  std::string stderr_text;  // what it wrote to stderr
+  double seconds = 0.0;     // wall time
+};
+
+// Runs `command_line` under timeout(1), so that a hang ends as exit 124 instead of a stuck
+// test, with stderr captured through `stderr_file`.
+inline CommandRun run_command_line(const std::string& command_line,
+                                   const std::filesystem::path& stderr_file) {
+  CommandRun r;
+  const auto start = std::chrono::steady_clock::now();
+  const int status =
+      std::system(("timeout 60 " + command_line + " >/dev/null 2>" + stderr_file.string()).c_str());
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(stderr_file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  r.stderr_text = text.str();
+  return r;
 }
 
 }  // namespace rugosim::testing
