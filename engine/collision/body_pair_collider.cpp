@@ -6,7 +6,6 @@
 #include <optional>
 
 #include "engine/collision/obb_overlap.h"
-#include "engine/collision/segment_crossing.h"
 #include "engine/collision/segment_distance.h"
 
 namespace rugosim {
@@ -57,22 +56,6 @@ double relative_motion(const Transform2& from, const Transform2& to, double reac
 }
 
 }  // namespace
-
-Vec2 outward_normal(const CubicSegment& segment, double t) {
-  const auto& a = segment.power();
-  const double scale = a[1].norm() + a[2].norm() + a[3].norm();
-  const double negligible = 1e-12 * scale;
-  Vec2 direction = segment.derivative(t);
-  if (direction.norm() <= negligible) {
-    // f'(t0) = 0: just after t0 the curve moves along f''(t0), just before along −f''(t0).
-    direction = t < 0.5 ? segment.second_derivative(t) : Vec2(-segment.second_derivative(t));
-    if (direction.norm() <= negligible) direction = segment.third_derivative();
-  }
-  const double length = direction.norm();
-  if (!(length > negligible) || !(length > 0.0)) return Vec2::Zero();
-  // Counter-clockwise travel: the outside is on the right.
-  return Vec2(direction.y(), -direction.x()) / length;
-}
 
 void merge_duplicate_contacts(std::vector<Contact>& contacts, std::size_t segments_a,
                               std::size_t segments_b) {
@@ -147,6 +130,9 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
   // Work in A's frame: A's segments are used as stored, only B's are moved.
   const Transform2 b_to_a = place_a.inverse() * place_b;
   find_leaf_pairs(a, b, b_to_a, cache, min_margin);
+  // m: how far the bodies may reach into each other and still only touch (touching.h).
+  const double touching_depth =
+      kTouchingDepthRelative * std::min(a.tree().reach(), b.tree().reach());
 
   for (std::size_t k = 0; k < leaf_pairs_.size(); ++k) {
     const LeafPair& pair = leaf_pairs_[k];
@@ -170,10 +156,17 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     }
     if (!within.nearest) continue;  // separated
     const NearestPoints& near = *within.nearest;
-    if (near.distance <= crossing_distance(seg_a, seg_b, settings_)) {
-      if (const auto crossing = crossing_from(near, seg_a, seg_b, settings_)) {
-        out.intersections.push_back({pair.segment_a, pair.segment_b, crossing->t_a, crossing->t_b,
-                                     place_a.apply(crossing->point)});
+    // Within crossing_distance, or reaching into each other by less than the touching depth,
+    // the pair touches or crosses (touching.h): touching is a contact at distance zero, along
+    // the normal that clears it.
+    const double zero = crossing_distance(seg_a, seg_b, settings_);
+    std::optional<Vec2> touch_normal;
+    if (near.distance <= zero ||
+        (near.distance <= touching_depth + zero && seen_from_inside(near, seg_a, seg_b))) {
+      touch_normal = touching_normal(near, seg_a, seg_b, touching_depth, settings_);
+      if (!touch_normal) {
+        out.intersections.push_back({pair.segment_a, pair.segment_b, near.t_a, near.t_b,
+                                     place_a.apply(0.5 * (near.point_a + near.point_b))});
         continue;
       }
     }
@@ -181,7 +174,10 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     const double lambda_b = b.tolerances().at(pair.segment_b, near.t_b);
     const double band = std::max(lambda_a + lambda_b, a.min_band() + b.min_band());
     if (near.distance > band) continue;  // separated
-    if (falls_past_a_joint(seg_a, near.t_a, seg_b, near.t_b, near.point_a - near.point_b)) {
+    // (Touching pairs have no direction between their points to tell; the duplicates found
+    // around a joint are merged below.)
+    if (!touch_normal &&
+        falls_past_a_joint(seg_a, near.t_a, seg_b, near.t_b, near.point_a - near.point_b)) {
       continue;  // the neighbouring pair holds the real minimum
     }
 
@@ -194,15 +190,16 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     c.lambda_b = lambda_b;
     c.point_a = place_a.apply(near.point_a);
     c.point_b = place_a.apply(near.point_b);
-    c.distance = near.distance;
+    c.distance = touch_normal ? 0.0 : near.distance;
     // The paper's contact point, corrected: the midpoint of the nearest points (DESIGN.md).
     const Vec2 d = c.point_a - c.point_b;
     c.point = c.point_b + 0.5 * d;
     // At nearest points d is normal to B wherever B is smooth, and it points from B to A by
     // construction; only when the curves touch (d ~ 0) does B's own normal decide.
     const double negligible = 1e-12 * (1.0 + c.point.norm());
-    Vec2 normal = d.norm() > negligible ? Vec2(d / d.norm())
-                                        : Vec2(place_a.rotate(outward_normal(seg_b, near.t_b)));
+    Vec2 normal = touch_normal            ? Vec2(place_a.rotate(*touch_normal))
+                  : d.norm() > negligible ? Vec2(d / d.norm())
+                                          : Vec2(place_a.rotate(outward_normal(seg_b, near.t_b)));
     if (!(normal.norm() > 0.5)) normal = Vec2::UnitY();  // a segment shrunk to a point
     c.normal = normal;
     candidates_.push_back(c);

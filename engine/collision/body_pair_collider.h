@@ -1,6 +1,9 @@
 // Collision between two placed bodies (paper §3.2): the trees give the leaf pairs whose boxes
 // overlap, the narrow phase classifies each pair of segments as crossing, in tolerated contact
 // (‖d‖ <= λ_a(t_a) + λ_b(t_b)) or separated, and the contacts are merged into one manifold.
+// Pairs that touch (touching.h: within the narrow phase's accuracy, or reaching into each other
+// by less than kTouchingDepthRelative of the smaller body's reach) are contacts at distance 0
+// along the normal that clears them, not crossings.
 #pragma once
 
 #include <cstdint>
@@ -10,6 +13,7 @@
 #include "engine/collision/collision_shape.h"
 #include "engine/collision/contact.h"
 #include "engine/collision/segment_distance.h"
+#include "engine/collision/touching.h"
 #include "engine/core/transform.h"
 
 namespace rugosim {
@@ -69,11 +73,6 @@ class BodyPairCollider {
   std::vector<LeafPairCache::Apart*> leaf_apart_;  // per leaf pair, its proof in the cache
   std::vector<Contact> candidates_;
 };
-
-// Unit normal of curve B at parameter t of segment j, pointing out of B (B runs
-// counter-clockwise). Where the tangent vanishes (a sharp corner made of repeated control
-// points) the first non-zero higher derivative gives the direction of travel instead.
-Vec2 outward_normal(const CubicSegment& segment, double t);
 
 // Merges contacts that describe the same place: nearest points of neighbouring leaf pairs
 // (same or adjacent segments on both bodies) closer together than the combined tolerance band,

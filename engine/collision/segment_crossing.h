@@ -8,7 +8,9 @@
 // deliberate: the two answers can never disagree, which a separate Bézier-clipping root finder
 // could not promise for pairs that come within rounding of touching.
 //
-// Touching at a single point and overlapping collinear pieces count as crossing (distance 0).
+// Touching at a single point and overlapping collinear pieces count here (distance 0); the
+// collision layer then tells touching from crossing (touching.h): only a crossing deeper than
+// the touching tolerance is backed off.
 //
 // Contract: find_crossing(a, b) has a value exactly when
 // nearest_points(a, b).distance <= crossing_distance(a, b). A caller that needs both

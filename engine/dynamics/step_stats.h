@@ -21,10 +21,11 @@ struct StepStats {
   std::uint64_t unresolved_states = 0;
   std::uint64_t crossing_fallbacks = 0;  // repeated min-step fallbacks: a crossing was accepted
   // Steps whose back-offs ran out (World::kMaxBackOffsPerStep) without reaching the step's end:
-  // the rest of the move was accepted as it was.
+  // the backed-off islands held still for the rest of the step.
   std::uint64_t stalled_steps = 0;
-  // Accepted states in which two boundaries cross: 0 is the goal, and only
-  // crossing_fallbacks and stalled_steps can make it grow.
+  double stalled_time = 0.0;  // s: those rests of steps, summed (an island's lost time)
+  // Accepted states in which two boundaries cross: 0 is the goal, and only crossing_fallbacks
+  // can make it grow.
   std::uint64_t crossings = 0;
   std::uint64_t passes = 0;         // contact-resolution passes over all the contacts of a state
   std::uint64_t islands_slept = 0;  // islands of resting bodies put to sleep

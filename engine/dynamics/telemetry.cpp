@@ -107,6 +107,8 @@ std::string stats_json(const StepStats& s, double wall_time, const Accuracy* acc
   append_number(out, s.sim_time);
   out.append(",\n  \"wall_time\": ");
   append_number(out, wall_time);
+  out.append(",\n  \"stalled_time\": ");
+  append_number(out, s.stalled_time);
   if (accuracy != nullptr) {
     out.append(",\n  \"accuracy\": {");
     const char* separator = "";

@@ -131,7 +131,13 @@ double World::back_off(double dt_full) {
   double hi = dt_full;
   std::vector<BodyPairKey> pairs = crossing_pairs(detected_);
   bool have_lo = false;
-  for (int i = 0; i < settings_.max_bisections && hi - lo > settings_.min_step; ++i) {
+  // min_step bounds the search once it has made progress; before that, halving goes on below
+  // it, down to kFinestStepShare of it (and within max_bisections): a gap thinner than the
+  // closing speed times min_step (small bodies have thin bands) needs a finer step to be caught.
+  const double finest = settings_.min_step * kFinestStepShare;
+  for (int i = 0; i < settings_.max_bisections &&
+                  (hi - lo > settings_.min_step || (!have_lo && hi - lo > finest));
+       ++i) {
     const double mid = lo + 0.5 * (hi - lo);
     place_at(mid);
     detect();
@@ -221,6 +227,41 @@ void World::resolve(const std::vector<ContactManifold>& manifolds, double time) 
   if (counts.still_approaching) ++stats_.unresolved_states;
 }
 
+void World::join_islands_within_reach(DisjointSets& islands,
+                                      std::vector<std::uint8_t>& crossing_root, double h) const {
+  // A body's boundary and bands stay within its tree's reach of its centre of mass, and the
+  // centre's free-flight path strays from the chord between its ends by at most |g|·h²/8: a
+  // box around that chord, so widened, holds the body wherever it backs off to.
+  const double bow = settings_.gravity.norm() * h * h / 8.0;
+  const auto box_of = [&](std::size_t i, bool swept) {
+    const double r = bodies_[i].shape().tree().reach() + (swept ? bow : 0.0);
+    const Vec2& end = bodies_[i].state().position;
+    const Vec2& begin = swept ? start_[i].position : end;
+    Aabb box;
+    box.extend(Vec2(begin.array() - r));
+    box.extend(Vec2(begin.array() + r));
+    box.extend(Vec2(end.array() - r));
+    box.extend(Vec2(end.array() + r));
+    return box;
+  };
+  std::vector<Aabb> swept(bodies_.size()), held(bodies_.size());
+  for (const std::size_t i : members_) {
+    swept[i] = box_of(i, true);
+    held[i] = box_of(i, false);
+  }
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const std::size_t i : members_) {
+      if (crossing_root[islands.root(i)] == 0) continue;
+      for (const std::size_t j : members_) {
+        if (crossing_root[islands.root(j)] != 0 || !swept[i].overlaps(held[j])) continue;
+        crossing_root[islands.root(j)] = 1;
+        grew = true;
+      }
+    }
+  }
+}
+
 void World::advance_crossing_members(double h) {
   double local = 0.0;         // s after time_ reached by the members
   bool trial_crosses = true;  // the caller found the move to h crossing
@@ -228,16 +269,13 @@ void World::advance_crossing_members(double h) {
   while (local < h) {
     const double dt_full = h - local;
     if (++back_offs > kMaxBackOffsPerStep) {
-      // The sub-steps are crawling: take the rest of the move as it is, so that time moves on.
-      save_start();
-      place_at(dt_full);
-      detect();
-      accepted_ = detected_;
-      accepted_pairs_ = detected_pairs_;
+      // The sub-steps are crawling: the island holds where it is, in the state it reached and
+      // with the impulses it got there, for the rest of the step, so that time moves on without
+      // a crossing (taking the rest of the move would cross).
       consecutive_fallbacks_ = 0;
       ++stats_.stalled_steps;
       ++stats_.fallbacks;
-      resolve(accepted_, time_ + h);
+      stats_.stalled_time += dt_full;
       return;
     }
     if (!trial_crosses) {
@@ -292,6 +330,7 @@ void World::step(double h) {
     if (moving_[m.body_a] != 0) crossing_root[islands.root(m.body_a)] = 1;
     if (moving_[m.body_b] != 0) crossing_root[islands.root(m.body_b)] = 1;
   }
+  join_islands_within_reach(islands, crossing_root, h);
   std::vector<std::size_t> crossing_members;
   std::vector<std::uint8_t> in_crossing(bodies_.size(), 0);
   for (const std::size_t i : members_) {

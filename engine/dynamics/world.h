@@ -12,18 +12,24 @@
 //     held still where it is. Their move is bisected on [lo, hi] = [0, h]: a trial that
 //     crosses becomes hi, one that does not becomes lo. It stops, accepting the trial, as soon
 //     as a non-crossing trial has a tolerated contact on a pair that crosses at hi: the bodies
-//     are then within their band, never across it. Bisection is bounded by max_bisections and
-//     by hi − lo <= min_step; when it runs out without such a trial, the last lo is accepted
-//     if lo > 0 (the gap closes on a later sub-step). If lo = 0 (even a step of min_step
-//     crosses), the fallback stops the bodies of the crossing pairs (v = 0, ω = 0) and accepts
-//     the unchanged state, counted in min_step_fallbacks; after kMaxConsecutiveFallbacks such
-//     fallbacks in a row the whole remaining move is accepted although it crosses, counted in
+//     are then within their band, never across it. Bisection is bounded by max_bisections and,
+//     once some trial did not cross, by hi − lo <= min_step (before that it goes on below
+//     min_step, down to kFinestStepShare of it: a band thinner than the closing speed times
+//     min_step, as small bodies have, needs it); when it runs out without such a trial, the last lo
+//     is accepted if lo > 0 (the gap closes on a later sub-step). If lo = 0 (even the shortest
+//     trial crosses), the fallback stops the bodies of the crossing pairs (v = 0, ω = 0) and
+//     accepts the unchanged state, counted in min_step_fallbacks; after kMaxConsecutiveFallbacks
+//     such fallbacks in a row the whole remaining move is accepted although it crosses, counted in
 //     crossing_fallbacks and crossings, so that time always moves on. Each accepted sub-state
-//     gets its impulses, and the backed-off islands sub-step on until they too reach h. A step
-//     is backed off at most kMaxBackOffsPerStep times: contacts that come and go at the
-//     resolution of the narrow phase (or a coarse seed_depth) could otherwise make the
-//     sub-steps crawl at min_step; then the rest of the move is accepted as it is, counted in
-//     stalled_steps.
+//     gets its impulses, and the backed-off islands sub-step on until they too reach h. An
+//     island apart from the crossing ones at h, but within reach of one of their bodies
+//     anywhere between its start and h, backs off with them (join_islands_within_reach): a
+//     backed-off body must not meet a body held at h. A step is backed off at most
+//     kMaxBackOffsPerStep times: contacts that come and go at the resolution of the narrow
+//     phase, or a stack of bodies bouncing in bands a micrometre thin, could otherwise make the
+//     sub-steps crawl; then the backed-off islands stay where they reached, with the impulses
+//     they got there, for the rest of the step (their clock stops, counted in stalled_steps and
+//     stalled_time), rather than take a move that would cross.
 //  3. Contacts of an accepted state get impulses (contact_resolution.h: collisions, and
 //     micro-collisions for resting contact; material mixing, gravity rules and the rigid-
 //     cluster fallback are there). Sleeping islands touched by an awake body wake first.
@@ -52,6 +58,7 @@
 #include <vector>
 
 #include "engine/collision/collision_pipeline.h"
+#include "engine/core/disjoint_sets.h"
 #include "engine/core/thread_pool.h"
 #include "engine/core/types.h"
 #include "engine/dynamics/contact_resolution.h"
@@ -110,8 +117,11 @@ class World {
  public:
   // After this many min-step fallbacks in a row, a crossing state is accepted (see above).
   static constexpr int kMaxConsecutiveFallbacks = 8;
-  // Back-offs of one step at most before the rest of its move is accepted (see above).
+  // Back-offs of one step at most before its backed-off islands hold still (see above).
   static constexpr int kMaxBackOffsPerStep = 32;
+  // How far below min_step a back-off that has found no crossing-free trial yet may halve: 2⁻¹⁰
+  // of it (for a gap that closes faster than the band is thick over min_step).
+  static constexpr double kFinestStepShare = 1.0 / 1024.0;
   static constexpr int kMaxThreads = 256;
 
   // Throws std::invalid_argument on non-finite gravity, a negative friction gain, steps that
@@ -175,6 +185,12 @@ class World {
   double next_step(double remaining);
   // One step of exactly h (s) for every awake movable body (islands that cross back off alone).
   void step(double h);
+  // Marks as crossing (crossing_root, per island root) every island of the trial with a body
+  // that a backing-off body could reach anywhere between its start and its trial place, while
+  // that island would be held at its trial place: a backed-off island must never meet a body
+  // accepted at h (islands apart at the step's end can be close in between).
+  void join_islands_within_reach(DisjointSets& islands, std::vector<std::uint8_t>& crossing_root,
+                                 double h) const;
   // Advances the members, whose full move to h (s after time_) was found to cross, by
   // back-off and further sub-steps until they reach h.
   void advance_crossing_members(double h);

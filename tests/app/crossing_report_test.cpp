@@ -1,8 +1,10 @@
 // Accepted crossings said out loud (render/app/crossing_report.h): a run whose knobs are too
-// coarse to back off before contact (one bisection, a time-of-impact tolerance as long as the
-// step) accepts crossing states through its fallback. simulate then warns on stderr at the
-// first one (time, bodies, depth), records it in stats.json, and with --strict exits 1 after
-// writing its files; render does the same. A clean run says nothing and --strict keeps exit 0.
+// coarse to back off before contact (10 ms steps, one bisection, a time-of-impact tolerance as
+// long as the step: a disk at rest a little above the floor crosses it at every trial, and
+// stopping it does not help) accepts crossing states through its fallback. simulate then warns on
+// stderr at the first one (time, bodies, depth), records it in stats.json, and with --strict exits
+// 1 after writing its files; render does the same. A clean run says nothing and --strict keeps exit
+// 0.
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -19,7 +21,7 @@ namespace fs = std::filesystem;
 using rugosim::testing::program;
 using rugosim::testing::source_dir;
 
-const std::string kCoarse = " --max-bisections 1 --toi-tolerance 0.001";
+const std::string kCoarse = " --max-step 0.01 --max-bisections 1 --toi-tolerance 0.01";
 
 class CrossingReport : public ::testing::Test {
  protected:

@@ -1,0 +1,51 @@
+// Touching or crossing? Two segments whose nearest points are within crossing_distance() of each
+// other (segment_crossing.h) either cross — one curve runs into the other's body — or merely
+// touch: a crate placed on a floor at exactly its resting height, faces closer than the preset's
+// accuracy resolves, a corner resting on a face. Touching is a contact at distance zero, inside
+// both bands (issue 15); only a crossing must be backed off.
+//
+// The test is a translation: move A away from B, along a candidate normal, by the depth
+// tolerance plus crossing_distance(). If the moved pair is then farther apart than
+// crossing_distance(), A reached into B by less than the tolerance along that normal: touching.
+// A transversal crossing, or a corner driven into a face deeper than the tolerance, still
+// crosses after any such move. The candidates are B's outward normal at its nearest point and
+// the reverse of A's (one of them is a face's normal where a corner meets a face); the one that
+// separates the pair most is the contact's normal.
+#pragma once
+
+#include <optional>
+
+#include "engine/collision/segment_distance.h"
+#include "engine/core/types.h"
+#include "engine/geometry/cubic_segment.h"
+
+namespace rugosim {
+
+// Dimensionless: bodies reaching into each other by at most this share of the smaller body's
+// size touch (issue 15: a scene summed in floating point places faces up to a few roundings
+// across each other; 1e-9 of a 1 m body is a nanometre, far below any pixel or band).
+inline constexpr double kTouchingDepthRelative = 1e-9;
+
+// Unit normal of `segment` at parameter t, pointing out of its body (curves run
+// counter-clockwise). Where the tangent vanishes (a sharp corner made of repeated control
+// points) the first non-zero higher derivative gives the direction of travel instead.
+Vec2 outward_normal(const CubicSegment& segment, double t);
+
+// Whether nearest points `near` of a and b (one frame) show A on the inside of B: the vector d
+// from B's point to A's runs into B (against B's outward normal) or out of A's far side (along
+// A's outward normal), by more than half its length. Apart or touching from outside, d leaves B
+// along its normal; where a curve turns a sharp corner its normal is one of the corner's edges',
+// which d crosses at a right angle or better, never against.
+bool seen_from_inside(const NearestPoints& near, const CubicSegment& a, const CubicSegment& b);
+
+// For a pair whose nearest points `near` (of a and b, in one frame) are within
+// crossing_distance(), or within the depth tolerance and seen_from_inside(): the unit normal,
+// pointing from B towards A, along which A moved by `depth_tolerance` (m; at least
+// crossing_distance() is used) plus crossing_distance() is clear of B (farther than
+// crossing_distance() and not seen_from_inside); or nullopt when no candidate normal clears it (a
+// crossing deeper than the tolerance).
+std::optional<Vec2> touching_normal(const NearestPoints& near, const CubicSegment& a,
+                                    const CubicSegment& b, double depth_tolerance,
+                                    const NarrowPhaseSettings& settings = {});
+
+}  // namespace rugosim
