@@ -29,14 +29,16 @@ struct CommandRun {
   double seconds = 0.0;     // wall time
 };
 
-// Runs `command_line` under timeout(1), so that a hang ends as exit 124 instead of a stuck
-// test, with stderr captured through `stderr_file`.
+// Runs `command_line` under timeout(1), so that a hang ends as exit 124 after `guard_seconds`
+// instead of a stuck test, with stderr captured through `stderr_file`.
 inline CommandRun run_command_line(const std::string& command_line,
-                                   const std::filesystem::path& stderr_file) {
+                                   const std::filesystem::path& stderr_file,
+                                   int guard_seconds = 60) {
   CommandRun r;
   const auto start = std::chrono::steady_clock::now();
-  const int status =
-      std::system(("timeout 60 " + command_line + " >/dev/null 2>" + stderr_file.string()).c_str());
+  const int status = std::system(("timeout " + std::to_string(guard_seconds) + " " + command_line +
+                                  " >/dev/null 2>" + stderr_file.string())
+                                     .c_str());
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   std::ifstream in(stderr_file);
