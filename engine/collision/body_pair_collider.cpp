@@ -160,23 +160,26 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     // the pair touches or crosses (touching.h): touching is a contact at distance zero, along
     // the normal that clears it.
     const double zero = crossing_distance(seg_a, seg_b, settings_);
-    std::optional<Vec2> touch_normal;
+    std::optional<Touch> touch;
     if (near.distance <= zero ||
         (near.distance <= touching_depth + zero && seen_from_inside(near, seg_a, seg_b))) {
-      touch_normal = touching_normal(near, seg_a, seg_b, touching_depth, settings_);
-      if (!touch_normal) {
+      touch = touching(near, seg_a, seg_b, touching_depth, settings_);
+      if (!touch) {
         out.intersections.push_back({pair.segment_a, pair.segment_b, near.t_a, near.t_b,
                                      place_a.apply(0.5 * (near.point_a + near.point_b))});
         continue;
       }
     }
-    const double lambda_a = a.tolerances().at(pair.segment_a, near.t_a);
-    const double lambda_b = b.tolerances().at(pair.segment_b, near.t_b);
+    // A touch acts where the curves reach deepest into each other (touching.h).
+    const double t_a = touch ? touch->t_a : near.t_a;
+    const double t_b = touch ? touch->t_b : near.t_b;
+    const double lambda_a = a.tolerances().at(pair.segment_a, t_a);
+    const double lambda_b = b.tolerances().at(pair.segment_b, t_b);
     const double band = std::max(lambda_a + lambda_b, a.min_band() + b.min_band());
     if (near.distance > band) continue;  // separated
     // (Touching pairs have no direction between their points to tell; the duplicates found
     // around a joint are merged below.)
-    if (!touch_normal &&
+    if (!touch &&
         falls_past_a_joint(seg_a, near.t_a, seg_b, near.t_b, near.point_a - near.point_b)) {
       continue;  // the neighbouring pair holds the real minimum
     }
@@ -184,20 +187,20 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     Contact c;
     c.segment_a = pair.segment_a;
     c.segment_b = pair.segment_b;
-    c.t_a = near.t_a;
-    c.t_b = near.t_b;
+    c.t_a = t_a;
+    c.t_b = t_b;
     c.lambda_a = lambda_a;
     c.lambda_b = lambda_b;
-    c.point_a = place_a.apply(near.point_a);
-    c.point_b = place_a.apply(near.point_b);
-    c.distance = touch_normal ? 0.0 : near.distance;
+    c.point_a = place_a.apply(touch ? seg_a.point(t_a) : near.point_a);
+    c.point_b = place_a.apply(touch ? seg_b.point(t_b) : near.point_b);
+    c.distance = touch ? 0.0 : near.distance;
     // The paper's contact point, corrected: the midpoint of the nearest points (DESIGN.md).
     const Vec2 d = c.point_a - c.point_b;
     c.point = c.point_b + 0.5 * d;
     // At nearest points d is normal to B wherever B is smooth, and it points from B to A by
     // construction; only when the curves touch (d ~ 0) does B's own normal decide.
     const double negligible = 1e-12 * (1.0 + c.point.norm());
-    Vec2 normal = touch_normal            ? Vec2(place_a.rotate(*touch_normal))
+    Vec2 normal = touch                   ? Vec2(place_a.rotate(touch->normal))
                   : d.norm() > negligible ? Vec2(d / d.norm())
                                           : Vec2(place_a.rotate(outward_normal(seg_b, near.t_b)));
     if (!(normal.norm() > 0.5)) normal = Vec2::UnitY();  // a segment shrunk to a point

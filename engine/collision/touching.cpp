@@ -30,23 +30,22 @@ bool seen_from_inside(const NearestPoints& near, const CubicSegment& a, const Cu
   return d.dot(outward_normal(b, near.t_b)) < -half || d.dot(outward_normal(a, near.t_a)) > half;
 }
 
-std::optional<Vec2> touching_normal(const NearestPoints& near, const CubicSegment& a,
-                                    const CubicSegment& b, double depth_tolerance,
-                                    const NarrowPhaseSettings& settings) {
+std::optional<Touch> touching(const NearestPoints& near, const CubicSegment& a,
+                              const CubicSegment& b, double depth_tolerance,
+                              const NarrowPhaseSettings& settings) {
   const double zero = crossing_distance(a, b, settings);
   const double shift = std::max(depth_tolerance, zero) + zero;
   const std::array<Vec2, 2> candidates = {outward_normal(b, near.t_b),
                                           Vec2(-outward_normal(a, near.t_a))};
-  std::optional<Vec2> best;
+  std::optional<Touch> best;
   double best_clearance = zero;  // a candidate must clear more than this
   for (const Vec2& n : candidates) {
     if (!(n.norm() > 0.5)) continue;  // no normal there (a segment shrunk to a point)
     const CubicSegment moved = a.transformed(Transform2(0.0, shift * n));
     const NearestPoints after = nearest_points(moved, b, settings);
-    const double clearance = after.distance;
-    if (clearance > best_clearance && !seen_from_inside(after, moved, b)) {
-      best_clearance = clearance;
-      best = n;
+    if (after.distance > best_clearance && !seen_from_inside(after, moved, b)) {
+      best_clearance = after.distance;
+      best = Touch{n, after.t_a, after.t_b};
     }
   }
   return best;

@@ -38,14 +38,24 @@ Vec2 outward_normal(const CubicSegment& segment, double t);
 // which d crosses at a right angle or better, never against.
 bool seen_from_inside(const NearestPoints& near, const CubicSegment& a, const CubicSegment& b);
 
+// How two curves touch: the contact's normal and where they reach deepest into each other.
+struct Touch {
+  Vec2 normal = Vec2::UnitY();  // unit, from B towards A
+  // The nearest points of the pair once A is moved clear along `normal`: the deepest place of
+  // the overlap (or of the touch), where the contact acts. The nearest points of the touching
+  // pair itself may sit at an edge of a tiny overlap, where a fast slide or spin would still
+  // drive the deeper middle in.
+  double t_a = 0.0, t_b = 0.0;
+};
+
 // For a pair whose nearest points `near` (of a and b, in one frame) are within
-// crossing_distance(), or within the depth tolerance and seen_from_inside(): the unit normal,
-// pointing from B towards A, along which A moved by `depth_tolerance` (m; at least
-// crossing_distance() is used) plus crossing_distance() is clear of B (farther than
-// crossing_distance() and not seen_from_inside); or nullopt when no candidate normal clears it (a
-// crossing deeper than the tolerance).
-std::optional<Vec2> touching_normal(const NearestPoints& near, const CubicSegment& a,
-                                    const CubicSegment& b, double depth_tolerance,
-                                    const NarrowPhaseSettings& settings = {});
+// crossing_distance(), or within the depth tolerance and seen_from_inside(): the touch, if A
+// moved by `depth_tolerance` (m; at least crossing_distance() is used) plus crossing_distance()
+// along a candidate normal is clear of B (farther than crossing_distance() and not
+// seen_from_inside); or nullopt when no candidate clears it (a crossing deeper than the
+// tolerance). Of two candidates that clear it, the one that clears it more.
+std::optional<Touch> touching(const NearestPoints& near, const CubicSegment& a,
+                              const CubicSegment& b, double depth_tolerance,
+                              const NarrowPhaseSettings& settings = {});
 
 }  // namespace rugosim

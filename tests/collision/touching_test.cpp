@@ -33,10 +33,10 @@ TEST(Touching, FacesAtZeroOrARoundingAcrossTouchAlongTheFloorNormal) {
     const CubicSegment a = crate_bottom(y);
     const NearestPoints near = nearest_points(a, kFloorTop);
     ASSERT_LE(near.distance, std::max(crossing_distance(a, kFloorTop), 5e-13)) << y;
-    const auto n = touching_normal(near, a, kFloorTop, 1e-9);
+    const auto n = touching(near, a, kFloorTop, 1e-9);
     ASSERT_TRUE(n.has_value()) << y;
-    EXPECT_NEAR(n->x(), 0.0, 1e-12) << y;
-    EXPECT_NEAR(n->y(), 1.0, 1e-12) << y;  // from B (the floor) towards A (the crate)
+    EXPECT_NEAR(n->normal.x(), 0.0, 1e-12) << y;
+    EXPECT_NEAR(n->normal.y(), 1.0, 1e-12) << y;  // from B (the floor) towards A (the crate)
   }
 }
 
@@ -47,7 +47,7 @@ TEST(Touching, FacesSunkDeeperThanTheToleranceAreSeenFromInsideAndCross) {
   const NearestPoints near = nearest_points(a, kFloorTop);
   EXPECT_NEAR(near.distance, 1e-6, 1e-12);
   EXPECT_TRUE(seen_from_inside(near, a, kFloorTop));
-  EXPECT_FALSE(touching_normal(near, a, kFloorTop, 1e-9).has_value());
+  EXPECT_FALSE(touching(near, a, kFloorTop, 1e-9).has_value());
   // The same gap on the outside is plainly apart.
   const CubicSegment above = crate_bottom(1e-6);
   EXPECT_FALSE(seen_from_inside(nearest_points(above, kFloorTop), above, kFloorTop));
@@ -69,7 +69,7 @@ TEST(Touching, TransversalCrossingsAreNeverTouching) {
     const CubicSegment b = segment_from_bezier(straight_polygon(at - sb * db, at + (1 - sb) * db));
     const NearestPoints near = nearest_points(a, b);
     ASSERT_LE(near.distance, crossing_distance(a, b)) << k;
-    EXPECT_FALSE(touching_normal(near, a, b, 1e-9 * size).has_value())
+    EXPECT_FALSE(touching(near, a, b, 1e-9 * size).has_value())
         << "case " << k << ", size " << size << ", angle " << angle;
   }
 }
@@ -135,6 +135,26 @@ TEST(Touching, ATiltedCrateStandingOnItsCornerTouchesAlongTheFloorNormal) {
     const double up = crate_first ? 1.0 : -1.0;  // the normal points from B towards A
     EXPECT_NEAR(m.contacts.front().normal.y(), up, 1e-9) << crate_first;
   }
+}
+
+TEST(Touching, AnOverlapBelowTheToleranceActsAtItsDeepestPoint) {
+  // A 0.5 m disk 1e-12 m into a flat floor: the curves cross at the edges of a lens about
+  // 1e-6 m either side of the lowest point; the contact acts at the lowest point, where a spin
+  // would drive the overlap deeper, not at an edge of the lens.
+  const Reversal ccw = make_counter_clockwise(circle_control_points(0.5, 64));
+  const CollisionShape disk(PeriodicBSpline(ccw.control_points),
+                            ToleranceProfile::from_sigma(std::vector<double>(64, 0.0), 0.9));
+  const CollisionShape floor = box_shape(4.0, 0.4);
+  BodyPairCollider collider;
+  ContactManifold m;
+  // The lowest point of the curve is a knot at angle −π/2 (radius exactly 0.5 there).
+  const double x = 0.123;
+  collider.collide(disk, Transform2(0.0, Vec2(x, 0.5 - 1e-12)), floor,
+                   Transform2(0.0, Vec2(0.0, -0.2)), m);
+  ASSERT_EQ(m.state(), PairState::kContact);
+  ASSERT_EQ(m.contacts.size(), 1u);
+  EXPECT_NEAR(m.contacts.front().point.x(), x, 1e-8);
+  EXPECT_NEAR(m.contacts.front().normal.y(), 1.0, 1e-12);
 }
 
 }  // namespace

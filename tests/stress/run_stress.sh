@@ -9,7 +9,7 @@
 #
 # Usage: tests/stress/run_stress.sh MINUTES [FIRST_SEED]
 #
-# Seeds run from FIRST_SEED (default 1000, past the 1..40 that ctest runs) upwards; the same
+# Seeds run from FIRST_SEED (default 1000, past the 1..30 that ctest runs) upwards; the same
 # seed is the same scene on any machine. Work files go to build/release/stress-long/; a failing
 # scene is copied to build/release/stress-long/failures/seed_N.json: once it is fixed, move it
 # to tests/stress/regressions/, where ctest runs it every time. A CSV of every scene is left in
