@@ -123,7 +123,41 @@ void World::detect() {
   const auto start = std::chrono::steady_clock::now();
   pipeline_.detect(placed_, pool_.get(), detected_);
   detected_pairs_ = pipeline_.near_pairs();
+  detect_containment();
   profile_.detection += seconds_since(start);
+}
+
+void World::detect_containment() {
+  containment_.resize(bodies_.size());
+  const auto samples = [&](std::size_t i) -> const ContainmentSamples& {
+    if (!containment_[i]) containment_[i] = containment_samples(bodies_[i]);
+    return *containment_[i];
+  };
+  const auto key = [](std::size_t a, std::size_t b) { return std::make_pair(a, b); };
+  std::size_t m = 0;  // detected_ and the near pairs are both in (a, b) order
+  for (const BodyPair& pair : detected_pairs_) {
+    while (m < detected_.size() &&
+           key(detected_[m].body_a, detected_[m].body_b) < key(pair.a, pair.b)) {
+      ++m;
+    }
+    if (m < detected_.size() && detected_[m].body_a == pair.a && detected_[m].body_b == pair.b) {
+      continue;  // in contact or crossing: not nested
+    }
+    for (const auto& [inner, outer] : {key(pair.a, pair.b), key(pair.b, pair.a)}) {
+      // The inner centroid lies in the inner curve's hull, so within the outer body's disc.
+      const RigidBody& in = bodies_[inner];
+      const RigidBody& out = bodies_[outer];
+      if ((in.state().position - out.state().position).norm() > out.bounding_radius()) continue;
+      if (!lies_inside(in, samples(inner), out, samples(outer)).value_or(false)) continue;
+      ContactManifold nested;
+      nested.body_a = pair.a;
+      nested.body_b = pair.b;
+      nested.intersections.push_back({0, 0, 0.0, 0.0, in.world_point(in.curve().point(0, 0.0))});
+      detected_.insert(detected_.begin() + static_cast<std::ptrdiff_t>(m), std::move(nested));
+      ++m;
+      break;
+    }
+  }
 }
 
 double World::back_off(double dt_full) {

@@ -62,6 +62,7 @@
 #include "engine/core/thread_pool.h"
 #include "engine/core/types.h"
 #include "engine/dynamics/contact_resolution.h"
+#include "engine/dynamics/containment.h"
 #include "engine/dynamics/event_record.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/dynamics/sleep_tracker.h"
@@ -178,6 +179,9 @@ class World {
   // Runs detection on the current placement, every non-member held still; result in
   // detected_ and detected_pairs_.
   void detect();
+  // Adds to detected_ a crossing for every near pair without contact where one body lies wholly
+  // inside the other (containment.h): nothing the boundaries show, yet no state to accept.
+  void detect_containment();
   // Whether the last state had a near pair (boxes with bands overlapping) with an awake mover.
   bool near_anything() const;
   // The next step's length, at most `remaining` (s): all of it while nothing can meet, else
@@ -209,6 +213,7 @@ class World {
   std::vector<std::uint8_t> moving_;  // per body: 1 when a member
   std::vector<BodyState> start_;      // per body: a member's state at the sub-step's start
   std::vector<PlacedShape> placed_;
+  std::vector<std::optional<ContainmentSamples>> containment_;  // per body, made when first needed
   CollisionPipeline pipeline_;
   StepPlanner planner_;
   ContactResolver resolver_;

@@ -6,9 +6,8 @@
 #include <string>
 
 #include "engine/collision/collision_pipeline.h"
-#include "engine/core/aabb.h"
 #include "engine/core/random.h"
-#include "engine/dynamics/overlap_depth.h"
+#include "engine/dynamics/containment.h"
 #include "engine/geometry/shapes.h"
 #include "engine/scene/model_limits.h"
 
@@ -90,67 +89,22 @@ std::vector<RigidBodyDesc> body_descriptions(const Scene& scene) {
 
 namespace {
 
-// A body's boundary sampled for the containment test, and how far the sampled polygon may
-// stray from the curve: a point farther than `tolerance` from the polygon is on the same side
-// of the curve as of the polygon.
-struct SampledBody {
-  std::vector<Vec2> polygon;
-  double tolerance = 0.0;  // m
-  Aabb box;
-};
-
-constexpr int kContainmentSamples = 16;  // per segment
-
-SampledBody sample_body(const RigidBody& body) {
-  SampledBody s;
-  s.polygon = sampled_boundary(body, kContainmentSamples);
-  const PeriodicBSpline& curve = body.curve();
-  double stray = 0.0;
-  const auto per_segment = static_cast<std::size_t>(kContainmentSamples);
-  for (std::size_t j = 0; j < curve.size(); ++j) {
-    for (std::size_t k = 0; k < per_segment; ++k) {
-      // The curve between two samples against the chord: its middle is the farthest, closely
-      // enough for the cubic pieces between samples 1/16 of a segment apart (doubled below).
-      const Vec2 u = s.polygon[j * per_segment + k];
-      const Vec2 v = s.polygon[(j * per_segment + k + 1) % s.polygon.size()];
-      const double t = (static_cast<double>(k) + 0.5) / kContainmentSamples;
-      const Vec2 mid = body.world_point(curve.point(j, t));
-      stray = std::max(stray, (mid - 0.5 * (u + v)).norm());
-    }
-  }
-  s.tolerance = 2.0 * stray + 1e-12 * body.bounding_radius();
-  for (const Vec2& p : s.polygon)
-    s.box.extend(p);
-  return s;
-}
-
-// The sampled boxes stray from the curves' by up to the tolerances: compared with that slack.
-bool box_within(const Aabb& inner, const Aabb& outer, double slack) {
-  return inner.min.x() >= outer.min.x() - slack && inner.min.y() >= outer.min.y() - slack &&
-         inner.max.x() <= outer.max.x() + slack && inner.max.y() <= outer.max.y() + slack;
-}
-
 // Pairs (inner, outer) of bodies whose boundaries do not cross (`crossing` lists those that
-// do) and where the inner one lies inside the outer one's curve.
+// do) and where the inner one lies inside the outer one's curve (containment.h).
 std::vector<std::pair<std::size_t, std::size_t>> nested_pairs(
     const World& world, const std::vector<std::pair<std::size_t, std::size_t>>& crossing) {
-  std::vector<SampledBody> sampled;
+  std::vector<ContainmentSamples> sampled;
   for (std::size_t i = 0; i < world.body_count(); ++i)
-    sampled.push_back(sample_body(world.body(i)));
+    sampled.push_back(containment_samples(world.body(i)));
   std::vector<std::pair<std::size_t, std::size_t>> nested;
   for (std::size_t inner = 0; inner < sampled.size(); ++inner) {
     for (std::size_t outer = 0; outer < sampled.size(); ++outer) {
       if (inner == outer) continue;
-      const double slack = sampled[inner].tolerance + sampled[outer].tolerance;
-      if (!box_within(sampled[inner].box, sampled[outer].box, slack)) continue;
       const std::pair<std::size_t, std::size_t> key{std::min(inner, outer), std::max(inner, outer)};
       if (std::find(crossing.begin(), crossing.end(), key) != crossing.end()) continue;
-      // Any point of the inner boundary far enough from the outer polygon decides: the
-      // boundaries do not cross, so all of it is on one side.
-      for (const Vec2& p : sampled[inner].polygon) {
-        if (distance_to_polygon(sampled[outer].polygon, p) <= sampled[outer].tolerance) continue;
-        if (inside_polygon(sampled[outer].polygon, p)) nested.emplace_back(inner, outer);
-        break;
+      if (lies_inside(world.body(inner), sampled[inner], world.body(outer), sampled[outer])
+              .value_or(false)) {
+        nested.emplace_back(inner, outer);
       }
     }
   }
