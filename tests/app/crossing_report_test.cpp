@@ -25,13 +25,6 @@ const std::string kCoarse = " --max-step 0.01 --max-bisections 1 --toi-tolerance
 
 class CrossingReport : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("rugosim_crossings_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // Runs `rugosim ARGS`; the exit code, stderr in err_.
   int run(const std::string& args) {
     const rugosim::testing::CommandRun r =
@@ -47,7 +40,8 @@ class CrossingReport : public ::testing::Test {
     return nlohmann::json::parse(in);
   }
 
-  fs::path dir_;
+  rugosim::testing::ScratchDir scratch_{"crossings"};
+  const fs::path& dir_ = scratch_.path();
   std::string err_;
 };
 

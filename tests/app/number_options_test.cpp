@@ -73,13 +73,6 @@ std::vector<NumericOption> table() {
 
 class NumberOptions : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("rugosim_numbers_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
   // The command with `option value` and short, small defaults for the rest (a 0.05 s run,
   // 64x64 frames), so that a legitimate value finishes at once.
   std::string command_line(const NumericOption& o, const std::string& value) const {
@@ -99,7 +92,8 @@ class NumberOptions : public ::testing::Test {
   }
   fs::path output() const { return dir_ / "out.mp4"; }
 
-  fs::path dir_;
+  rugosim::testing::ScratchDir scratch_{"numbers"};
+  const fs::path& dir_ = scratch_.path();
 };
 
 // The longest run of decimal digits in `text` (CLI11 wrote DBL_MAX with 309 of them).

@@ -31,13 +31,8 @@ struct Case {
 
 class TouchingAtRest : public ::testing::TestWithParam<std::tuple<Case, const char*>> {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("rugosim_touching_" + std::to_string(::getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  fs::path dir_;
+  rugosim::testing::ScratchDir scratch_{"touching"};
+  const fs::path& dir_ = scratch_.path();
 };
 
 std::string read_text(const fs::path& p) {
