@@ -188,6 +188,8 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
   add_accuracy_options(*c.snapshot, c.snap.accuracy);
   c.snap.threads = cpus;
   add_threads_option(*c.snapshot, c.snap.threads);
+  c.snapshot->add_flag("--strict", c.snap.strict,
+                       "exit 1 when the run had to accept a crossing state (for CI)");
   c.snapshot->footer(
       "Examples:\n"
       "  rugosim snapshot scenes/figure12a.json --golden tests/goldens --size 320x180 --update\n"

@@ -77,13 +77,15 @@ struct SnapshotOptions {
   std::string backend = "osmesa";
   std::string anti_aliasing = "shader";
   AccuracyOverride accuracy;
-  int threads = 1;  // of collision detection (--threads)
+  int threads = 1;      // of collision detection (--threads)
+  bool strict = false;  // exit 1 when the run had to accept a crossing state
 };
 
 // Renders frames of a scene and compares them with golden PNGs (INTERFACE.md, `snapshot`), or
 // writes the goldens with --update. Exit 0 when every frame passes (or was written), 1 when one
 // fails or is missing (an `actual` and a `diff` image and a summary are written next to the
-// goldens), 2 for bad usage, a bad scene or an unreadable golden.
+// goldens), or with --strict when the simulation accepted a crossing state (crossing_report.h),
+// 2 for bad usage, a bad scene or an unreadable golden.
 int run_snapshot(const SnapshotOptions& options);
 
 struct PlotOptions {

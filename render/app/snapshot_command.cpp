@@ -19,6 +19,7 @@
 #include "engine/core/version.h"
 #include "render/app/clip_render.h"
 #include "render/app/commands.h"
+#include "render/app/crossing_report.h"
 #include "render/app/render_scene.h"
 #include "render/app/run_length.h"
 #include "render/app/scene_input.h"
@@ -404,11 +405,14 @@ int run_snapshot(const SnapshotOptions& o) {
       fmt::print(stderr, "interrupted: nothing compared or written\n");
       return kExitInterrupted;
     }
+    // The simulation ran on the pipeline's thread: its first crossing is told here, after it.
+    CrossingWatch().check(*loaded->world, stderr);
     if (o.update) {
       write_goldens(s, frames, renderer);
-      return kExitOk;
+      return strict_exit_code(*loaded->world, o.strict, kExitOk, stderr);
     }
-    return compare_all(o, s, frames, renderer) ? kExitOk : kExitFailure;
+    const bool passed = compare_all(o, s, frames, renderer);
+    return strict_exit_code(*loaded->world, o.strict, passed ? kExitOk : kExitFailure, stderr);
   } catch (const BadGolden& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kExitUsage;

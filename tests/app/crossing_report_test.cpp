@@ -3,8 +3,8 @@
 // long as the step: a disk at rest a little above the floor crosses it at every trial, and
 // stopping it does not help) accepts crossing states through its fallback. simulate then warns on
 // stderr at the first one (time, bodies, depth), records it in stats.json, and with --strict exits
-// 1 after writing its files; render does the same. A clean run says nothing and --strict keeps exit
-// 0.
+// 1 after writing its files; render and snapshot do the same. A clean run says nothing and
+// --strict keeps exit 0.
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -77,6 +77,22 @@ TEST_F(CrossingReport, RenderStrictExits1) {
   EXPECT_NE(err_.find("warning: t = "), std::string::npos) << err_;
   EXPECT_EQ(run(args + " --strict"), 1) << err_;
   EXPECT_TRUE(fs::exists(dir_ / "clip.mp4"));
+}
+
+TEST_F(CrossingReport, SnapshotWarnsAndStrictExits1AfterWritingTheGoldens) {
+  const std::string args = "snapshot " + scene("validation_bouncing_disk") + kCoarse +
+                           " --size 64x64 --frames 0,30 --update --golden " +
+                           (dir_ / "goldens").string();
+  EXPECT_EQ(run(args), 0) << err_;
+  EXPECT_NE(err_.find("warning: t = "), std::string::npos) << err_;
+  EXPECT_EQ(run(args + " --strict"), 1) << err_;
+  EXPECT_NE(err_.find("error: --strict: "), std::string::npos) << err_;
+  EXPECT_TRUE(fs::exists(dir_ / "goldens" / "validation_bouncing_disk_30.png"));
+  // Comparing against those goldens passes, and still fails with --strict.
+  const std::string compare = "snapshot " + scene("validation_bouncing_disk") + kCoarse +
+                              " --golden " + (dir_ / "goldens").string();
+  EXPECT_EQ(run(compare), 0) << err_;
+  EXPECT_EQ(run(compare + " --strict"), 1) << err_;
 }
 
 TEST_F(CrossingReport, ACleanRunSaysNothingAndStrictKeepsExit0) {
