@@ -147,11 +147,11 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     // and proving that is much cheaper than finding the nearest points exactly.
     const double widest_band = a.segment_band(pair.segment_a) + b.segment_band(pair.segment_b);
     const WithinThreshold within = nearest_points_within(seg_a, seg_b, widest_band, settings_);
+    const double zero = crossing_distance(seg_a, seg_b, settings_);
     if (apart != nullptr) {
       // Apart means beyond the band and beyond "touching" (crossing_distance), which a pair
       // without rugosity and a coarse accuracy can have wider than its band.
-      const double margin =
-          within.lower_bound - std::max(widest_band, crossing_distance(seg_a, seg_b, settings_));
+      const double margin = within.lower_bound - std::max(widest_band, zero);
       *apart = {b_to_a, margin > 0.0 ? margin : 0.0};
     }
     if (!within.nearest) continue;  // separated
@@ -159,7 +159,6 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     // Within crossing_distance, or reaching into each other by less than the touching depth,
     // the pair touches or crosses (touching.h): touching is a contact at distance zero, along
     // the normal that clears it.
-    const double zero = crossing_distance(seg_a, seg_b, settings_);
     std::optional<Touch> touch;
     if (near.distance <= zero ||
         (near.distance <= touching_depth + zero && seen_from_inside(near, seg_a, seg_b))) {

@@ -103,6 +103,7 @@ std::vector<std::string> check_run(const std::vector<TrajectoryRow>& rows,
   std::map<long, double> energy;
   double y_lo = std::numeric_limits<double>::infinity(), y_hi = -y_lo;
   double total_mass_weight = 0.0;
+  double kinetic0 = 0.0;
   bool all_finite = true;
   for (const TrajectoryRow& r : rows) {
     const double values[] = {r.time, r.x, r.y, r.angle, r.vx, r.vy, r.omega, r.kinetic_energy};
@@ -122,6 +123,7 @@ std::vector<std::string> check_run(const std::vector<TrajectoryRow>& rows,
     }
     energy[r.frame] += r.kinetic_energy - m->second * (gravity[0] * r.x + gravity[1] * r.y);
     if (r.frame == 0) {
+      kinetic0 += r.kinetic_energy;
       y_lo = std::min(y_lo, r.y);
       y_hi = std::max(y_hi, r.y);
       total_mass_weight += m->second * std::hypot(gravity[0], gravity[1]);
@@ -133,9 +135,6 @@ std::vector<std::string> check_run(const std::vector<TrajectoryRow>& rows,
     }
   }
   if (!all_finite || energy.empty()) return failures;
-  double kinetic0 = 0.0;
-  for (const TrajectoryRow& r : rows)
-    if (r.frame == 0) kinetic0 += r.kinetic_energy;
   const double height = std::max(y_hi - y_lo, scene_height);
   const double scale = kinetic0 + total_mass_weight * height;
   const double start = energy.begin()->second;

@@ -224,14 +224,11 @@ void summarise(const std::vector<Outcome>& all, int failed) {
       ran.push_back(&o);
     }
   }
-  std::printf(
-      "\nstress: %zu scenes, %zu run, %d failed, %zu refused by validate\n", all.size(),
-      all.size() -
-          static_cast<std::size_t>(std::count_if(
-              all.begin(), all.end(), [](const Outcome& o) { return o.verdict == "refused"; })),
-      failed, static_cast<std::size_t>(std::count_if(all.begin(), all.end(), [](const Outcome& o) {
-        return o.verdict == "refused";
-      })));
+  std::size_t refused = 0;
+  for (const auto& [reason, count] : refusals)
+    refused += static_cast<std::size_t>(count);
+  std::printf("\nstress: %zu scenes, %zu run, %d failed, %zu refused by validate\n", all.size(),
+              all.size() - refused, failed, refused);
   for (const auto& [reason, count] : refusals)
     std::printf("  refused %d x: %s\n", count, reason.c_str());
   std::sort(ran.begin(), ran.end(),
