@@ -156,12 +156,16 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     }
     if (!within.nearest) continue;  // separated
     const NearestPoints& near = *within.nearest;
-    // Within crossing_distance, or reaching into each other by less than the touching depth,
-    // the pair touches or crosses (touching.h): touching is a contact at distance zero, along
-    // the normal that clears it.
+    // Within crossing_distance, reaching into each other by less than the touching depth, or
+    // with one curve's nearest point plainly inside the other within the band (dipped_inside;
+    // farther in, the pair is apart as far as the leaf-pair cache is concerned, and the curves
+    // cross at some other pair, closer to the surface), the pair touches
+    // or crosses (touching.h): touching is a contact at distance zero, along the normal that
+    // clears it.
     std::optional<Touch> touch;
     if (near.distance <= zero ||
-        (near.distance <= touching_depth + zero && seen_from_inside(near, seg_a, seg_b))) {
+        (near.distance <= touching_depth + zero && seen_from_inside(near, seg_a, seg_b)) ||
+        (near.distance <= widest_band && dipped_inside(near, seg_a, seg_b))) {
       touch = touching(near, seg_a, seg_b, touching_depth, settings_);
       if (!touch) {
         out.intersections.push_back({pair.segment_a, pair.segment_b, near.t_a, near.t_b,

@@ -30,6 +30,30 @@ bool seen_from_inside(const NearestPoints& near, const CubicSegment& a, const Cu
   return d.dot(outward_normal(b, near.t_b)) < -half || d.dot(outward_normal(a, near.t_a)) > half;
 }
 
+namespace {
+
+// Whether `point` of `segment` at t, the segment's nearest point to `other`, is a smooth
+// interior point at which d = other − point runs against the outward normal (the first-order
+// condition of a minimum makes it parallel there, up to the search's accuracy).
+bool runs_inward(const CubicSegment& segment, double t, const Vec2& d) {
+  constexpr double kEndShare = 1e-6;   // a nearest point this close to an end is the end
+  constexpr double kParallel = 0.999;  // cos of the angle a first-order minimum leaves
+  constexpr double kSmooth = 1e-3;     // speed, relative to the segment's, of a sharp corner
+  if (!(t > kEndShare && t < 1.0 - kEndShare)) return false;
+  const auto& p = segment.power();
+  const double scale = p[1].norm() + p[2].norm() + p[3].norm();
+  if (!(segment.derivative(t).norm() > kSmooth * scale)) return false;
+  return d.dot(outward_normal(segment, t)) < -kParallel * d.norm();
+}
+
+}  // namespace
+
+bool dipped_inside(const NearestPoints& near, const CubicSegment& a, const CubicSegment& b) {
+  const Vec2 d = near.point_a - near.point_b;
+  if (!(d.norm() > 0.0)) return false;
+  return runs_inward(b, near.t_b, d) || runs_inward(a, near.t_a, Vec2(-d));
+}
+
 std::optional<Touch> touching(const NearestPoints& near, const CubicSegment& a,
                               const CubicSegment& b, double depth_tolerance,
                               const NarrowPhaseSettings& settings) {

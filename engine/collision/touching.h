@@ -38,6 +38,16 @@ Vec2 outward_normal(const CubicSegment& segment, double t);
 // which d crosses at a right angle or better, never against.
 bool seen_from_inside(const NearestPoints& near, const CubicSegment& a, const CubicSegment& b);
 
+// Whether nearest points `near` of a and b (one frame) lie on the inner side of a curve, as a
+// first-order minimum can say it for certain: at a smooth interior point of B (or of A) the
+// vector d from B's point to A's is parallel to that curve's normal, and when it runs against
+// B's outward normal (or along A's), A's point lies inside B (or B's inside A), |d| deep. That
+// is a crossing whatever |d| is: the curves cross somewhere around it, closer to parallel than
+// the narrow phase's seeds resolve (issue 15, stress seed 1076: a rock 2e-8 m inside a box's
+// face, read as a contact whose normal pointed into the box). Points at a segment's end or at
+// a sharp corner, where d need not be parallel to any normal, never count.
+bool dipped_inside(const NearestPoints& near, const CubicSegment& a, const CubicSegment& b);
+
 // How two curves touch: the contact's normal and where they reach deepest into each other.
 struct Touch {
   Vec2 normal = Vec2::UnitY();  // unit, from B towards A

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -155,6 +156,47 @@ TEST(Touching, AnOverlapBelowTheToleranceActsAtItsDeepestPoint) {
   ASSERT_EQ(m.contacts.size(), 1u);
   EXPECT_NEAR(m.contacts.front().point.x(), x, 1e-8);
   EXPECT_NEAR(m.contacts.front().normal.y(), 1.0, 1e-12);
+}
+
+// Stress seed 1076: a rock's gently curved underside 2e-8 m inside a box's face, a crossing
+// closer to parallel than the seeds of draft resolve, so that the search returned the dip's
+// bottom as the nearest points. dipped_inside reads it as inside at any depth; the same gap
+// outside, or nearest points at a segment's end (a corner, where d need not be parallel to a
+// normal), never.
+TEST(Touching, ANearestPointDippedInsideAFaceIsACrossingAtAnyDepth) {
+  const auto underside = [](double y) {
+    BezierPolygon p = testing::parabola(0.2, 1.0, 0.5);  // apex at parameter 0.5
+    for (Vec2& v : p)
+      v += Vec2(0.1, y);
+    return segment_from_bezier(p);
+  };
+  const auto near_at_apex = [](const CubicSegment& a, double t_b) {
+    NearestPoints near;
+    near.t_a = 0.5;
+    near.point_a = a.point(0.5);
+    near.t_b = t_b;
+    near.point_b = kFloorTop.point(t_b);
+    near.distance = (near.point_a - near.point_b).norm();
+    return near;
+  };
+  for (const double depth : {2e-8, 1e-5, 1e-3}) {
+    const CubicSegment inside = underside(-depth);
+    const NearestPoints near = near_at_apex(inside, 0.45);  // the floor's point under x = 0.1
+    ASSERT_NEAR(near.point_b.x(), 0.1, 1e-12);
+    EXPECT_TRUE(dipped_inside(near, inside, kFloorTop)) << depth;
+    // The same pair seen with B as the rock: B's point inside A.
+    NearestPoints swapped = near;
+    std::swap(swapped.t_a, swapped.t_b);
+    std::swap(swapped.point_a, swapped.point_b);
+    EXPECT_TRUE(dipped_inside(swapped, kFloorTop, inside)) << depth;
+    // The touch test then finds no move by the tolerance that clears it.
+    EXPECT_FALSE(touching(near, inside, kFloorTop, 1e-9).has_value()) << depth;
+
+    const CubicSegment outside = underside(depth);
+    EXPECT_FALSE(dipped_inside(near_at_apex(outside, 0.45), outside, kFloorTop)) << depth;
+    // At the floor segment's end the vector need not be parallel to its normal: no verdict.
+    EXPECT_FALSE(dipped_inside(near_at_apex(inside, 0.0), inside, kFloorTop)) << depth;
+  }
 }
 
 }  // namespace

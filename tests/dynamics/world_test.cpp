@@ -351,32 +351,39 @@ TEST(World, TunnellingBoundNeverStepsPastTheTarget) {
   }
 }
 
-// Back-offs that get nowhere end in stalled steps, not in a crawl: seeds searched only 4
-// halvings deep (below what a scene may ask for) make the sharp box of the rough patch touch
-// and part the floor at the resolution of the search; a quarter second still takes a bounded
-// number of bisections (each step at most kMaxBackOffsPerStep back-offs of at most 20 + 10
-// halvings of 1 ms), and a stalled island holds still rather than cross.
+// Back-offs that get nowhere end in stalled steps, not in a crawl: a disk rattling at 100 m/s
+// between two walls 0.2 mm wider than it, without loss, would need about 250 back-offs in each
+// step the tunnelling bound allows (half its thickness, 0.05 m, of travel); after
+// kMaxBackOffsPerStep of them the island holds still for the rest of the step, rather than
+// crawl or cross, and it never leaves the slot.
 TEST(World, CrawlingBackOffsEndInStalledSteps) {
-  const std::string path =
-      (testing::source_dir() / "scenes" / "validation_rough_patch.json").string();
-  const Scene scene = load_scene_file(path).scene;
-  WorldSettings settings = world_settings(scene);
-  settings.narrow_phase.max_depth = 4;
+  WorldSettings settings;
+  settings.gravity = Vec2::Zero();
   World world(settings);
-  for (const RigidBodyDesc& desc : body_descriptions(scene))
-    world.add_body(RigidBody(desc));
-  world.advance_to(0.25);
-  EXPECT_EQ(world.time(), 0.25);
+  const double radius = 0.05, gap = 0.0002;
+  for (const double side : {-1.0, 1.0}) {
+    RigidBodyDesc wall;
+    wall.control_points = box_control_points(0.2, 0.4, 16);
+    wall.position = Vec2(side * (radius + 0.5 * gap + 0.1), 0.0);
+    wall.fixed = true;
+    world.add_body(RigidBody(wall));
+  }
+  world.add_body(disk(radius, 32, Vec2::Zero(), Vec2(100.0, 0.0), make_material(1.0, 1.0)));
+  world.advance_to(0.01);
+  EXPECT_EQ(world.time(), 0.01);
   EXPECT_GE(world.stats().stalled_steps, 1u);
   EXPECT_GT(world.stats().stalled_time, 0.0);
   EXPECT_EQ(world.stats().crossings, 0u);
-  // Far from a crawl at min_step (2.5e8 steps).
+  EXPECT_LT(std::abs(world.body(2).state().position.x()), 0.5 * gap + 1e-9);
+  // Far from a crawl at min_step.
+  const auto steps_bound = static_cast<std::uint64_t>(0.01 / 5e-4) + 1;
   EXPECT_LT(world.stats().bisections,
-            250u * static_cast<unsigned>(World::kMaxBackOffsPerStep) * 30u);
+            steps_bound * static_cast<unsigned>(World::kMaxBackOffsPerStep) * 60u);
   EXPECT_EQ(world.stats().fallbacks,
             world.stats().min_step_fallbacks + world.stats().crossing_fallbacks +
                 world.stats().pass_fallbacks + world.stats().stalled_steps);
   RecordProperty("stalled_steps", std::to_string(world.stats().stalled_steps));
+  RecordProperty("steps", std::to_string(world.stats().steps));
 }
 
 TEST(World, RejectsBadSettings) {
