@@ -96,8 +96,9 @@ void BodyPairCollider::find_leaf_pairs(const CollisionShape& a, const CollisionS
       relative_motion(cache->b_to_a, b_to_a, b.tree().reach()) > cache->margin) {
     cache->a = cache->b = 0;  // until the query is through
     cache->b_to_a = b_to_a;
-    cache->margin = std::max(
-        min_margin, LeafPairCache::kMarginRelative * std::min(a.tree().reach(), b.tree().reach()));
+    const double smaller = std::min(a.tree().reach(), b.tree().reach());
+    cache->margin = std::min(std::max(min_margin, LeafPairCache::kMarginRelative * smaller),
+                             LeafPairCache::kMarginRelativeMax * smaller);
     cache->candidates.clear();
     // A little wider than the margin: boxes placed with other roundings than the query's must
     // still be among the candidates at a move of exactly the margin.
@@ -109,11 +110,16 @@ void BodyPairCollider::find_leaf_pairs(const CollisionShape& a, const CollisionS
     cache->a = a.id();
     cache->b = b.id();
   }
-  // The query's own test at the leaves, in its order.
+  // The query's own test at the leaves, in its order; each of B's boxes is placed once.
+  b_leaf_boxes_.resize(b.curve().size());
+  b_leaf_placed_.assign(b.curve().size(), 0);
   for (std::size_t k = 0; k < cache->candidates.size(); ++k) {
     const LeafPair& pair = cache->candidates[k];
-    if (obb_overlap(a.tree().leaf_box(pair.segment_a),
-                    b.tree().leaf_box(pair.segment_b).transformed(b_to_a))) {
+    if (b_leaf_placed_[pair.segment_b] == 0) {
+      b_leaf_boxes_[pair.segment_b] = b.tree().leaf_box(pair.segment_b).transformed(b_to_a);
+      b_leaf_placed_[pair.segment_b] = 1;
+    }
+    if (obb_overlap(a.tree().leaf_box(pair.segment_a), b_leaf_boxes_[pair.segment_b])) {
       leaf_pairs_.push_back(pair);
       leaf_apart_.push_back(&cache->apart[k]);
     }
