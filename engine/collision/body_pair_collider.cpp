@@ -139,6 +139,8 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
   // m: how far the bodies may reach into each other and still only touch (touching.h).
   const double touching_depth =
       kTouchingDepthRelative * std::min(a.tree().reach(), b.tree().reach());
+  // m: how deep a nearest point on the other curve's inner side is read as inside (touching.h).
+  const double dipped_depth = kDippedDepthRelative * std::min(a.tree().reach(), b.tree().reach());
 
   for (std::size_t k = 0; k < leaf_pairs_.size(); ++k) {
     const LeafPair& pair = leaf_pairs_[k];
@@ -163,7 +165,8 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     if (!within.nearest) continue;  // separated
     const NearestPoints& near = *within.nearest;
     // Within crossing_distance, reaching into each other by less than the touching depth, or
-    // with one curve's nearest point plainly inside the other within the band (dipped_inside;
+    // with one curve's nearest point plainly inside the other, within the band and
+    // kDippedDepthRelative of the bodies' size (dipped_inside;
     // farther in, the pair is apart as far as the leaf-pair cache is concerned, and the curves
     // cross at some other pair, closer to the surface), the pair touches
     // or crosses (touching.h): touching is a contact at distance zero, along the normal that
@@ -171,7 +174,8 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     std::optional<Touch> touch;
     if (near.distance <= zero ||
         (near.distance <= touching_depth + zero && seen_from_inside(near, seg_a, seg_b)) ||
-        (near.distance <= widest_band && dipped_inside(near, seg_a, seg_b))) {
+        (near.distance <= std::min(widest_band, dipped_depth) &&
+         dipped_inside(near, seg_a, seg_b))) {
       touch = touching(near, seg_a, seg_b, touching_depth, settings_);
       if (!touch) {
         out.intersections.push_back({pair.segment_a, pair.segment_b, near.t_a, near.t_b,

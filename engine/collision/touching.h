@@ -38,6 +38,12 @@ Vec2 outward_normal(const CubicSegment& segment, double t);
 // which d crosses at a right angle or better, never against.
 bool seen_from_inside(const NearestPoints& near, const CubicSegment& a, const CubicSegment& b);
 
+// Dimensionless: dipped_inside is trusted down to this share of the smaller body's size. A point
+// on a curve's inner side lies inside the body only where the body is thicker than the depth: a
+// plank thinner than the band has the far face of a body resting on it on its own inner side.
+// Crossings that dip deeper than this are found by the seeds as crossings of their own.
+inline constexpr double kDippedDepthRelative = 1e-6;
+
 // Whether nearest points `near` of a and b (one frame) lie on the inner side of a curve, as a
 // first-order minimum can say it for certain: at a smooth interior point of B (or of A) the
 // vector d from B's point to A's is parallel to that curve's normal, and when it runs against

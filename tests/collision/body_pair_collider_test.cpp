@@ -81,6 +81,22 @@ TEST(BodyPairCollider, BeyondTheBandIsSeparated) {
   EXPECT_TRUE(m.intersections.empty());
 }
 
+// A plank thinner than the band: the crate's bottom face lies on the inner side of the plank's
+// bottom face, within the band, yet outside the plank. Only a dip of a millionth of the bodies'
+// size is read as inside (kDippedDepthRelative), so the crate rests on the plank.
+TEST(BodyPairCollider, ACrateOnAPlankThinnerThanTheBandIsInContact) {
+  BodyPairCollider collider;
+  ContactManifold m;
+  const CollisionShape plank = make_shape(box_control_points(1.0, 0.001, 16), 0.003 / 0.9);
+  const CollisionShape crate = make_shape(box_control_points(0.2, 0.1, 16), 0.003 / 0.9);
+  for (const double gap : {0.0005, 0.002}) {
+    collider.collide(crate, Transform2(0.0, Vec2(0.1, 0.0005 + gap + 0.05)), plank,
+                     Transform2(0.0, Vec2::Zero()), m);
+    EXPECT_EQ(m.state(), PairState::kContact) << gap;
+    EXPECT_TRUE(m.intersections.empty()) << gap;
+  }
+}
+
 TEST(BodyPairCollider, SunkenDiskIntersectsWhereTheCirclesCrossTheFace) {
   BodyPairCollider collider;
   ContactManifold m;
