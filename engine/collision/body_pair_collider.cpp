@@ -137,10 +137,10 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
   const Transform2 b_to_a = place_a.inverse() * place_b;
   find_leaf_pairs(a, b, b_to_a, cache, min_margin);
   // m: how far the bodies may reach into each other and still only touch (touching.h).
-  const double touching_depth =
-      kTouchingDepthRelative * std::min(a.tree().reach(), b.tree().reach());
+  const double smaller_reach = std::min(a.tree().reach(), b.tree().reach());
+  const double touching_depth = kTouchingDepthRelative * smaller_reach;
   // m: how deep a nearest point on the other curve's inner side is read as inside (touching.h).
-  const double dipped_depth = kDippedDepthRelative * std::min(a.tree().reach(), b.tree().reach());
+  const double dipped_depth = kDippedDepthRelative * smaller_reach;
 
   for (std::size_t k = 0; k < leaf_pairs_.size(); ++k) {
     const LeafPair& pair = leaf_pairs_[k];
@@ -165,12 +165,9 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     if (!within.nearest) continue;  // separated
     const NearestPoints& near = *within.nearest;
     // Within crossing_distance, reaching into each other by less than the touching depth, or
-    // with one curve's nearest point plainly inside the other, within the band and
-    // kDippedDepthRelative of the bodies' size (dipped_inside;
-    // farther in, the pair is apart as far as the leaf-pair cache is concerned, and the curves
-    // cross at some other pair, closer to the surface), the pair touches
-    // or crosses (touching.h): touching is a contact at distance zero, along the normal that
-    // clears it.
+    // with one curve's nearest point plainly inside the other by at most dipped_depth and the
+    // band (dipped_inside), the pair touches or crosses (touching.h): touching is a contact at
+    // distance zero, along the normal that clears it.
     std::optional<Touch> touch;
     if (near.distance <= zero ||
         (near.distance <= touching_depth + zero && seen_from_inside(near, seg_a, seg_b)) ||

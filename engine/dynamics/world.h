@@ -200,8 +200,10 @@ class World {
   void advance_crossing_members(double h);
   // Bisects the members' move of dt_full (s) whose end crosses; returns the accepted dt (0 after
   // a min-step fallback), leaves the members there and the manifolds in accepted_.
-  bool push_touching_apart(const std::vector<std::pair<std::size_t, std::size_t>>& pairs);
   double back_off(double dt_full);
+  // At a min-step fallback: moves the touching pairs among `pairs` (sorted) apart by twice the
+  // touching depth; whether any body moved.
+  bool push_touching_apart(const std::vector<std::pair<std::size_t, std::size_t>>& pairs);
   // Impulses for the manifolds of an accepted state at `time` (s), and the step statistics.
   void resolve(const std::vector<ContactManifold>& manifolds, double time);
   // Sets first_crossing_ from the first intersecting pair of `manifolds` (an accepted state).
