@@ -222,7 +222,7 @@ double World::back_off(double dt_full) {
     }
   }
   detect();
-  if (push_touching_apart(pairs)) detect();
+  push_touching_apart(pairs);
   accepted_ = detected_;
   accepted_pairs_ = detected_pairs_;
   return 0.0;
@@ -233,33 +233,49 @@ bool World::push_touching_apart(const std::vector<std::pair<std::size_t, std::si
   // touching depth) at the state held, and crosses a rounding later even with both bodies
   // stopped, sits at the edge of that depth: no sub-step can move it, and after
   // kMaxConsecutiveFallbacks the crossing fallback would take the move across (stress seeds
-  // 1389, 1393). Such a pair is moved apart along its contact's normal by twice the touching
-  // depth (a position correction of nanometres, shared by inverse mass), back inside the
-  // tolerance with room to spare.
-  bool moved = false;
+  // 1389, 1393). Such a pair is moved apart along its touching contacts' mean normal by twice
+  // the touching depth (a position correction of nanometres, shared by inverse mass among the
+  // bodies moving in this sub-step), back inside the tolerance with room to spare.
+  const bool held_crossing = any_crossing(detected_);
+  std::vector<std::pair<std::size_t, BodyState>> saved;  // each moved body's state before
   for (const ContactManifold& m : detected_) {
     if (!std::binary_search(pairs.begin(), pairs.end(), std::make_pair(m.body_a, m.body_b)))
       continue;
-    const auto touch = std::find_if(m.contacts.begin(), m.contacts.end(),
-                                    [](const Contact& c) { return c.distance == 0.0; });
-    if (touch == m.contacts.end()) continue;
-    RigidBody& a = bodies_[m.body_a];
-    RigidBody& b = bodies_[m.body_b];
-    const double wa = a.inverse_mass(), wb = b.inverse_mass();
+    Vec2 normal = Vec2::Zero();
+    for (const Contact& c : m.contacts) {
+      if (c.distance == 0.0) normal += c.normal;
+    }
+    if (!(normal.norm() > 0.0)) continue;
+    normal.normalize();
+    // A body outside this sub-step (asleep, or in another island) is held like a fixed one.
+    const auto weight = [this](std::size_t i) {
+      return moving_[i] != 0 ? bodies_[i].inverse_mass() : 0.0;
+    };
+    const double wa = weight(m.body_a), wb = weight(m.body_b);
     if (!(wa + wb > 0.0)) continue;
     const double depth =
-        kTouchingDepthRelative * std::min(a.shape().tree().reach(), b.shape().tree().reach());
-    const Vec2 shift = 2.0 * depth * touch->normal;  // from B towards A
-    for (auto [body, share] :
-         {std::make_pair(&a, wa / (wa + wb)), std::make_pair(&b, -wb / (wa + wb))}) {
+        kTouchingDepthRelative * std::min(bodies_[m.body_a].shape().tree().reach(),
+                                          bodies_[m.body_b].shape().tree().reach());
+    const Vec2 shift = 2.0 * depth * normal;  // from B towards A
+    for (auto [i, share] :
+         {std::make_pair(m.body_a, wa / (wa + wb)), std::make_pair(m.body_b, -wb / (wa + wb))}) {
       if (share == 0.0) continue;
-      BodyState st = body->state();
+      BodyState st = bodies_[i].state();
+      saved.emplace_back(i, st);
       st.position += share * shift;
-      body->set_state(st);
+      bodies_[i].set_state(st);
     }
-    moved = true;
   }
-  return moved;
+  if (saved.empty()) return false;
+  detect();
+  if (!held_crossing && any_crossing(detected_)) {
+    // The push crossed some other pair: the held state is kept as it was.
+    for (auto it = saved.rbegin(); it != saved.rend(); ++it)
+      bodies_[it->first].set_state(it->second);
+    detect();
+    return false;
+  }
+  return true;
 }
 
 void World::record_first_crossing(const std::vector<ContactManifold>& manifolds, double time) {
