@@ -291,15 +291,39 @@ unset multiplot
   app::run_gnuplot(script, path.string());
 }
 
+// A mistake on the command line (exit 2, as rugosim's own).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 int run(int argc, char** argv) {
   fs::path out_dir = fs::path(RUGOSIM_SOURCE_DIR) / "docs" / "accuracy";
   int repeats = 3;
+  bool out_dir_given = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--repeats" && i + 1 < argc) {
-      repeats = std::max(1, std::atoi(argv[++i]));
+    if (arg == "-h" || arg == "--help") {
+      fmt::print(
+          "Usage: accuracy_study [OUT_DIR] [--repeats N]\n"
+          "Runs every built-in scene at every preset and along each accuracy knob and\n"
+          "writes accuracy.csv, accuracy.md and pareto.png into OUT_DIR (default\n"
+          "docs/accuracy of the source tree). N: timed runs per setting, best kept (3).\n");
+      return 0;
+    }
+    if (arg == "--repeats") {
+      char* end = nullptr;
+      const long n = i + 1 < argc ? std::strtol(argv[i + 1], &end, 10) : 0;
+      if (i + 1 >= argc || *end != '\0' || n < 1 || n > 1000)
+        throw UsageError("--repeats expects a whole number from 1 to 1000");
+      repeats = static_cast<int>(n);
+      ++i;
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw UsageError("unknown option " + arg + " (see --help)");
+    } else if (out_dir_given) {
+      throw UsageError("one OUT_DIR expected, got " + out_dir.string() + " and " + arg);
     } else {
       out_dir = arg;
+      out_dir_given = true;
     }
   }
   fs::create_directories(out_dir);
@@ -389,6 +413,9 @@ int run(int argc, char** argv) {
 int main(int argc, char** argv) {
   try {
     return rugosim::study::run(argc, argv);
+  } catch (const rugosim::study::UsageError& e) {
+    fmt::print(stderr, "accuracy_study: {}\n", e.what());
+    return 2;
   } catch (const std::exception& e) {
     fmt::print(stderr, "accuracy_study: {}\n", e.what());
     return 1;
