@@ -30,6 +30,16 @@ BodyState free_flight(const BodyState& state, const Vec2& gravity, double dt) {
   return next;
 }
 
+BodyState driven_flight(const BodyState& state, const Vec2& acceleration,
+                        double angular_acceleration, double dt) {
+  BodyState next;
+  next.position = state.position + state.velocity * dt + (0.5 * dt * dt) * acceleration;
+  next.velocity = state.velocity + acceleration * dt;
+  next.angle = state.angle + state.angular_velocity * dt + 0.5 * angular_acceleration * dt * dt;
+  next.angular_velocity = state.angular_velocity + angular_acceleration * dt;
+  return next;
+}
+
 void advance_free_flight(RigidBody& body, const Vec2& gravity, double dt) {
   if (body.fixed()) return;
   body.set_state(free_flight(body.state(), gravity, dt));

@@ -17,6 +17,13 @@ namespace rugosim {
 // motion backwards), so advancing by dt1 then dt2 is advancing by dt1 + dt2.
 BodyState free_flight(const BodyState& state, const Vec2& gravity, double dt);
 
+// The state dt (s) later under a constant linear acceleration (m/s², gravity included) and a
+// constant angular acceleration (rad/s²), as contact forces held over a step give
+// (contact_forces.h): x = x0 + v0·dt + ½·a·dt², v = v0 + a·dt, θ = θ0 + ω0·dt + ½·α·dt²,
+// ω = ω0 + α·dt. With α = 0 it is free_flight.
+BodyState driven_flight(const BodyState& state, const Vec2& acceleration,
+                        double angular_acceleration, double dt);
+
 // Advances a body by free flight; a fixed body stays where it is.
 void advance_free_flight(RigidBody& body, const Vec2& gravity, double dt);
 

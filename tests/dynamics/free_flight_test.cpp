@@ -106,6 +106,43 @@ TEST(FreeFlight, AdvancingInPiecesEqualsAdvancingAtOnce) {
   RecordProperty("worst_relative_error_1000_steps", scientific(worst_many));
 }
 
+TEST(DrivenFlight, WithoutAngularAccelerationIsFreeFlightBitForBit) {
+  Rng rng(711);
+  for (int c = 0; c < kCases; ++c) {
+    const BodyState s = random_state(rng);
+    const Vec2 g = random_gravity(rng);
+    const double t = rng.uniform(0.0, 5.0);
+    const BodyState f = free_flight(s, g, t);
+    const BodyState d = driven_flight(s, g, 0.0, t);
+    EXPECT_EQ(f.position, d.position);
+    EXPECT_EQ(f.velocity, d.velocity);
+    EXPECT_EQ(f.angle, d.angle);
+    EXPECT_EQ(f.angular_velocity, d.angular_velocity);
+  }
+}
+
+TEST(DrivenFlight, MatchesTheClosedFormAndRunsInPieces) {
+  Rng rng(712);
+  for (int c = 0; c < kCases; ++c) {
+    const BodyState s = random_state(rng);
+    const Vec2 a = random_gravity(rng);
+    const double alpha = rng.uniform(-100.0, 100.0);
+    const double t = rng.uniform(0.0, 2.0);
+    const BodyState d = driven_flight(s, a, alpha, t);
+    const long double lt = t;
+    const long double angle = s.angle + lt * (s.angular_velocity + 0.5L * alpha * lt);
+    const double angle_scale =
+        std::abs(s.angle) + std::abs(s.angular_velocity) * t + std::abs(alpha) * t * t + 1.0;
+    EXPECT_LE(std::abs(static_cast<double>(d.angle - angle)), 1e-15 * angle_scale);
+    EXPECT_NEAR(d.angular_velocity, s.angular_velocity + alpha * t,
+                1e-15 * (std::abs(s.angular_velocity) + std::abs(alpha) * t + 1.0));
+    // A constant acceleration is the same motion taken in two pieces.
+    const double t1 = rng.uniform(0.0, t);
+    const BodyState two = driven_flight(driven_flight(s, a, alpha, t1), a, alpha, t - t1);
+    EXPECT_LE(state_error(two, d, s, a, t), 1e-13);
+  }
+}
+
 TEST(FreeFlight, RunningBackwardsUndoesTheFlight) {
   Rng rng(703);
   for (int c = 0; c < kCases; ++c) {
