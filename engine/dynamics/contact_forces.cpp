@@ -79,7 +79,7 @@ ForceResult solve_contact_forces(std::span<const ForceBody> bodies,
     // s + h·w_n + ½h²·a_g,n + ½h·(Kφ)_n ≥ 0  ⇔  (Kφ)_n ≥ −2(s/h + w_n) − h·a_g,n.
     r.normal_target = -2.0 * (c.gap / h + w.dot(c.normal)) - h * a_g.dot(c.normal);
     r.tangent_target = -(w.dot(r.tangent) + h * a_g.dot(r.tangent));
-    speed_scale = std::max(speed_scale, std::abs(r.normal_target));
+    speed_scale = std::max(speed_scale, r.normal_target);
     // Warm start: last step's force over this step, inside this step's cone.
     const double phi_n = std::max(0.0, c.force.x() * h);
     const double limit = c.friction * phi_n;

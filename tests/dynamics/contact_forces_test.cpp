@@ -175,6 +175,24 @@ TEST(ContactForces, AGapTheStepDoesNotCloseGetsNoForceAndOneItWouldCrossIsClosed
   }
 }
 
+TEST(ContactForces, AFarGapDoesNotLoosenTheToleranceOfTheContactsThatRest) {
+  // A third contact of the resting box whose gap is wide asks for nothing, however large the
+  // approach it allows (2·gap/h); it must not set the scale the others converge to.
+  const double mass = 3.0, w = 0.2, hh = 0.1;
+  const std::vector<ForceBody> bodies{fixed_floor(), box(mass, w, hh, Vec2(0.0, hh))};
+  std::vector<ForceContact> contacts = corners_on_floor(1, bodies[1], Vec2::UnitY(), w, hh, 0.5);
+  ForceContact far = contacts[0];
+  far.point = bodies[1].position + Vec2(0.0, hh);
+  far.normal = -Vec2::UnitY();
+  far.gap = 10.0;  // a ceiling 10 m above the box's top
+  contacts.push_back(far);
+  const ForceResult r = solve_contact_forces(bodies, contacts, Vec2(0.0, -kG), kStep);
+  ASSERT_TRUE(r.converged);
+  EXPECT_EQ(contacts[2].force, Vec2::Zero());
+  EXPECT_NEAR(contacts[0].force.x() + contacts[1].force.x(), mass * kG, 1e-9 * mass * kG);
+  EXPECT_LE(r.acceleration[1].norm(), 1e-9 * kG);
+}
+
 TEST(ContactForces, AStackCarriesTheWeightAboveEachLayerAndAWarmStartConvergesAtOnce) {
   const double mass = 1.5, w = 0.2, hh = 0.1;
   const std::size_t layers = 6;
