@@ -106,12 +106,22 @@ TEST(FreeFlight, AdvancingInPiecesEqualsAdvancingAtOnce) {
   RecordProperty("worst_relative_error_1000_steps", scientific(worst_many));
 }
 
+// A random state, gravity and flight time in [0, 5] s.
+struct FlightCase {
+  BodyState s;
+  Vec2 g;
+  double t;
+};
+FlightCase random_case(Rng& rng) {
+  const BodyState s = random_state(rng);
+  const Vec2 g = random_gravity(rng);
+  return {s, g, rng.uniform(0.0, 5.0)};
+}
+
 TEST(DrivenFlight, WithoutAngularAccelerationIsFreeFlightBitForBit) {
   Rng rng(711);
   for (int c = 0; c < kCases; ++c) {
-    const BodyState s = random_state(rng);
-    const Vec2 g = random_gravity(rng);
-    const double t = rng.uniform(0.0, 5.0);
+    const auto [s, g, t] = random_case(rng);
     const BodyState f = free_flight(s, g, t);
     const BodyState d = driven_flight(s, g, 0.0, t);
     EXPECT_EQ(f.position, d.position);
@@ -146,9 +156,7 @@ TEST(DrivenFlight, MatchesTheClosedFormAndRunsInPieces) {
 TEST(FreeFlight, RunningBackwardsUndoesTheFlight) {
   Rng rng(703);
   for (int c = 0; c < kCases; ++c) {
-    const BodyState s = random_state(rng);
-    const Vec2 g = random_gravity(rng);
-    const double t = rng.uniform(0.0, 5.0);
+    const auto [s, g, t] = random_case(rng);
     const BodyState back = free_flight(free_flight(s, g, t), g, -t);
     EXPECT_LE(state_error(back, s, s, g, t), 1e-13);
   }
