@@ -50,6 +50,11 @@ ForceResult solve_contact_forces(std::span<const ForceBody> bodies,
     change[c.body_b].angular_velocity -= b.inverse_inertia * cross(r.arm_b, delta);
   };
 
+  // m/s: the change the accumulated φ has made so far to contact c's relative velocity.
+  const auto relative_change = [&](const ForceContact& c, const Row& r) -> Vec2 {
+    return point_change(change[c.body_a], r.arm_a) - point_change(change[c.body_b], r.arm_b);
+  };
+
   std::vector<Row> rows(contacts.size());
   double speed_scale = gravity.norm() * h;
   for (std::size_t i = 0; i < contacts.size(); ++i) {
@@ -96,9 +101,7 @@ ForceResult solve_contact_forces(std::span<const ForceBody> bodies,
       if (r.normal_mass == 0.0) continue;
       // Friction first, against the cone of the normal impulse so far (Box2D 2.4.1's order).
       if (r.tangent_mass > 0.0) {
-        const double dw_t =
-            (point_change(change[c.body_a], r.arm_a) - point_change(change[c.body_b], r.arm_b))
-                .dot(r.tangent);
+        const double dw_t = relative_change(c, r).dot(r.tangent);
         const double limit = c.friction * r.impulse.x();
         const double phi_t =
             std::clamp(r.impulse.y() + r.tangent_mass * (r.tangent_target - dw_t), -limit, limit);
@@ -109,9 +112,7 @@ ForceResult solve_contact_forces(std::span<const ForceBody> bodies,
           largest = std::max(largest, std::abs(delta) / r.tangent_mass);
         }
       }
-      const double dw_n =
-          (point_change(change[c.body_a], r.arm_a) - point_change(change[c.body_b], r.arm_b))
-              .dot(c.normal);
+      const double dw_n = relative_change(c, r).dot(c.normal);
       const double phi_n = std::max(0.0, r.impulse.x() + r.normal_mass * (r.normal_target - dw_n));
       const double delta = phi_n - r.impulse.x();
       if (delta != 0.0) {

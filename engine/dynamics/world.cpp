@@ -228,7 +228,7 @@ double World::back_off(double dt_full) {
   return 0.0;
 }
 
-bool World::push_touching_apart(const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
+void World::push_touching_apart(const std::vector<std::pair<std::size_t, std::size_t>>& pairs) {
   // A pair that touches (a contact at distance 0: reaching into each other by less than the
   // touching depth) at the state held, and crosses a rounding later even with both bodies
   // stopped, sits at the edge of that depth: no sub-step can move it, and after
@@ -266,16 +266,14 @@ bool World::push_touching_apart(const std::vector<std::pair<std::size_t, std::si
       bodies_[i].set_state(st);
     }
   }
-  if (saved.empty()) return false;
+  if (saved.empty()) return;
   detect();
   if (!held_crossing && any_crossing(detected_)) {
     // The push crossed some other pair: the held state is kept as it was.
     for (auto it = saved.rbegin(); it != saved.rend(); ++it)
       bodies_[it->first].set_state(it->second);
     detect();
-    return false;
   }
-  return true;
 }
 
 void World::record_first_crossing(const std::vector<ContactManifold>& manifolds, double time) {

@@ -202,9 +202,9 @@ class World {
   // a min-step fallback), leaves the members there and the manifolds in accepted_.
   double back_off(double dt_full);
   // At a min-step fallback: moves the touching pairs among `pairs` (sorted) apart by twice the
-  // touching depth, unless that crosses another pair; whether any body moved. Leaves the
-  // manifolds of the state it holds in detected_.
-  bool push_touching_apart(const std::vector<std::pair<std::size_t, std::size_t>>& pairs);
+  // touching depth, unless that crosses another pair. Leaves the manifolds of the state it
+  // holds in detected_.
+  void push_touching_apart(const std::vector<std::pair<std::size_t, std::size_t>>& pairs);
   // Impulses for the manifolds of an accepted state at `time` (s), and the step statistics.
   void resolve(const std::vector<ContactManifold>& manifolds, double time);
   // Sets first_crossing_ from the first intersecting pair of `manifolds` (an accepted state).
