@@ -19,11 +19,10 @@
 //                (the end gap is what the row constrains, so a thin band is never crossed by a
 //                body that rests the whole step under gravity: ½gh² may be far wider than it);
 //   tangent row: w_t + h·a_g,t + (Kφ)_t = 0 (stick), clamped to |φ_t| ≤ μ·φ_n (slip).
-// Solved by projected Gauss-Seidel with accumulated clamping (Catto's sequential impulses on the
-// rows above), friction before normal in each contact as Box2D 2.4.1 does, warm-started from the
-// forces of the last step, which converge to the simultaneous solution that a one-contact-at-a-
-// time impulse scheme never reaches. Rows are visited in their given order, so the result is
-// bit-reproducible.
+// Solved by projected Gauss-Seidel with accumulated clamping (contact_rows.h: Catto's sequential
+// impulses on the rows above), warm-started from the forces of the last step, which converge to
+// the simultaneous solution that a one-contact-at-a-time impulse scheme never reaches. The result
+// is bit-reproducible.
 #pragma once
 
 #include <cstddef>
@@ -31,18 +30,13 @@
 #include <vector>
 
 #include "engine/core/types.h"
+#include "engine/dynamics/contact_rows.h"
 
 namespace rugosim {
 
 // What the solver needs of a body (the state at the start of the step). A fixed body has
 // inverse_mass = inverse_inertia = 0 and feels no gravity.
-struct ForceBody {
-  double inverse_mass = 0.0;      // 1/kg
-  double inverse_inertia = 0.0;   // 1/(kg·m²)
-  Vec2 position = Vec2::Zero();   // m, centre of mass
-  Vec2 velocity = Vec2::Zero();   // m/s
-  double angular_velocity = 0.0;  // rad/s
-};
+using ForceBody = SolverBody;
 
 // One contact row. `force` is read as the warm start and written with the solution.
 struct ForceContact {
