@@ -64,17 +64,25 @@ const std::vector<BodyPair>& SweepAndPrune::find_pairs(std::span<const BroadPhas
     }
   }
 
+  // The boxes in sweep order, side by side in memory: the inner loop below runs over a few
+  // neighbours of each box, and reading them through order_ cost a cache miss each.
   const int other = 1 - axis_;
-  for (std::size_t k = 0; k < order_.size(); ++k) {
+  swept_.resize(count);
+  for (std::size_t k = 0; k < count; ++k) {
     const std::uint32_t i = order_[k];
-    const Aabb& bi = proxies[i].box;
-    for (std::size_t m = k + 1; m < order_.size(); ++m) {
-      const std::uint32_t j = order_[m];
-      const Aabb& bj = proxies[j].box;
-      if (bj.min[axis_] > bi.max[axis_]) break;  // sorted: nothing further can overlap i
-      if (bj.min[other] > bi.max[other] || bi.min[other] > bj.max[other]) continue;
-      if (!pair_can_interact(proxies[i], proxies[j])) continue;
-      pairs_.push_back(i < j ? BodyPair{i, j} : BodyPair{j, i});
+    const BroadPhaseProxy& p = proxies[i];
+    swept_[k] = {p.box.min[axis_], p.box.max[axis_], p.box.min[other], p.box.max[other], i,
+                 proxy_moves(p)};
+  }
+  for (std::size_t k = 0; k < count; ++k) {
+    const Swept& bi = swept_[k];
+    for (std::size_t m = k + 1; m < count; ++m) {
+      const Swept& bj = swept_[m];
+      if (bj.lo > bi.hi) break;  // sorted: nothing further can overlap i
+      if (bj.other_lo > bi.other_hi || bi.other_lo > bj.other_hi) continue;
+      if (!bi.moves && !bj.moves) continue;  // pair_can_interact
+      pairs_.push_back(bi.index < bj.index ? BodyPair{bi.index, bj.index}
+                                           : BodyPair{bj.index, bi.index});
     }
   }
   // Sorted by (a, b): a counting sort on a, then each body's few partners by insertion, linear

@@ -26,10 +26,11 @@ struct BodyPair {
 
 // A pair needs testing only if one of its bodies is moving: two fixed bodies never collide,
 // and a sleeping body only needs to wake when an awake one reaches it.
+inline bool proxy_moves(const BroadPhaseProxy& p) {
+  return !p.fixed && !p.asleep;
+}
 inline bool pair_can_interact(const BroadPhaseProxy& a, const BroadPhaseProxy& b) {
-  const bool a_moves = !a.fixed && !a.asleep;
-  const bool b_moves = !b.fixed && !b.asleep;
-  return a_moves || b_moves;
+  return proxy_moves(a) || proxy_moves(b);
 }
 
 class SweepAndPrune {
@@ -40,6 +41,14 @@ class SweepAndPrune {
 
  private:
   std::vector<std::uint32_t> order_;  // proxies sorted by box.min along the sweep axis
+  // A box in sweep order: its extent along the sweep axis and the other one.
+  struct Swept {
+    double lo = 0.0, hi = 0.0;
+    double other_lo = 0.0, other_hi = 0.0;
+    std::uint32_t index = 0;
+    bool moves = false;  // proxy_moves
+  };
+  std::vector<Swept> swept_;
   std::vector<BodyPair> pairs_;
   std::vector<BodyPair> sorted_;       // scratch of the final sort
   std::vector<std::uint32_t> starts_;  // per body a: where its pairs begin in sorted_

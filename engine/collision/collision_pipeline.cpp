@@ -10,24 +10,31 @@ constexpr std::size_t kParallelPairs = 8;
 
 }  // namespace
 
-void CollisionPipeline::carry_caches_over(const std::vector<BodyPair>& pairs) {
-  // Both lists are sorted by (a, b): one merge.
+void CollisionPipeline::match_caches(const std::vector<BodyPair>& pairs) {
+  // Both lists are sorted by (a, b): one merge, of indices only. The caches themselves are
+  // moved by the thread that collides the pair (take_cache), so that this serial part stays
+  // short and each cache is touched by one thread per call.
   const auto before = [](const BodyPair& p, const BodyPair& q) {
     return p.a < q.a || (p.a == q.a && p.b < q.b);
   };
   if (next_caches_.size() < pairs.size()) next_caches_.resize(pairs.size());
+  cache_source_.resize(pairs.size());
   std::size_t old = 0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     while (old < cache_pairs_.size() && before(cache_pairs_[old], pairs[k]))
       ++old;
-    if (old < cache_pairs_.size() && cache_pairs_[old] == pairs[k]) {
-      std::swap(next_caches_[k], caches_[old]);
-    } else {
-      next_caches_[k].a = 0;  // a new pair: nothing cached
-    }
+    cache_source_[k] = old < cache_pairs_.size() && cache_pairs_[old] == pairs[k] ? old : kNoCache;
   }
-  std::swap(caches_, next_caches_);
-  cache_pairs_ = pairs;
+}
+
+LeafPairCache& CollisionPipeline::take_cache(std::size_t k) {
+  LeafPairCache& cache = next_caches_[k];
+  if (cache_source_[k] != kNoCache) {
+    std::swap(cache, caches_[cache_source_[k]]);
+  } else {
+    cache.a = 0;  // a new pair: nothing cached
+  }
+  return cache;
 }
 
 const std::vector<ContactManifold>& CollisionPipeline::detect(std::span<const PlacedShape> bodies,
@@ -52,17 +59,17 @@ void CollisionPipeline::detect(std::span<const PlacedShape> bodies, ThreadPool* 
   const int threads = pool != nullptr && pairs.size() >= kParallelPairs ? pool->size() : 1;
   while (colliders_.size() < static_cast<std::size_t>(threads))
     colliders_.emplace_back(narrow_phase_);
-  carry_caches_over(pairs);
+  match_caches(pairs);
 
   const auto collide_pairs = [&](std::size_t begin, std::size_t end, int thread) {
-    BodyPairCollider& collider = colliders_[static_cast<std::size_t>(thread)];
+    BodyPairCollider& collider = colliders_[static_cast<std::size_t>(thread)].collider;
     for (std::size_t k = begin; k < end; ++k) {
       const PlacedShape& a = bodies[pairs[k].a];
       const PlacedShape& b = bodies[pairs[k].b];
       PairResult& result = results_[k];
       // Wide enough that the pair's cache lasts a few steps of its relative motion.
-      collider.collide(*a.shape, a.placement, *b.shape, b.placement, result.manifold, &caches_[k],
-                       3.0 * (a.motion_per_step + b.motion_per_step));
+      collider.collide(*a.shape, a.placement, *b.shape, b.placement, result.manifold,
+                       &take_cache(k), 3.0 * (a.motion_per_step + b.motion_per_step));
       result.leaf_pairs = collider.last_leaf_pairs().size();
     }
   };
@@ -75,6 +82,9 @@ void CollisionPipeline::detect(std::span<const PlacedShape> bodies, ThreadPool* 
     collide_pairs(0, pairs.size(), 0);
   }
 
+  std::swap(caches_, next_caches_);
+  cache_pairs_ = pairs;
+
   std::size_t found = 0;
   for (std::size_t k = 0; k < pairs.size(); ++k) {
     PairResult& result = results_[k];
@@ -85,7 +95,9 @@ void CollisionPipeline::detect(std::span<const PlacedShape> bodies, ThreadPool* 
     counts_.intersections += result.manifold.intersections.size();
     counts_.contacts += result.manifold.contacts.size();
     if (found == out.size()) out.emplace_back();
-    out[found++] = result.manifold;  // copy-assigned: the element's vectors keep their storage
+    // Swapped, not copied: the result takes the element's old storage, to be refilled by the
+    // next call, so neither side allocates once a scene's contacts have been seen.
+    std::swap(out[found++], result.manifold);
   }
   out.resize(found);
 }

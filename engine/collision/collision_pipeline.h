@@ -61,8 +61,11 @@ class CollisionPipeline {
   const std::vector<BodyPair>& near_pairs() const { return near_pairs_; }
 
  private:
-  // Moves the caches of the last call's pairs to their places in `pairs` (sorted by (a, b)).
-  void carry_caches_over(const std::vector<BodyPair>& pairs);
+  // Finds, for each of `pairs` (sorted by (a, b)), the index of its cache among the last
+  // call's pairs (cache_source_).
+  void match_caches(const std::vector<BodyPair>& pairs);
+  // Pair k's cache, moved to its place in next_caches_ (by the thread colliding the pair).
+  LeafPairCache& take_cache(std::size_t k);
 
   // What the narrow phase found for one broad-phase pair.
   struct PairResult {
@@ -72,7 +75,14 @@ class CollisionPipeline {
 
   NarrowPhaseSettings narrow_phase_;
   SweepAndPrune broad_phase_;
-  std::vector<BodyPairCollider> colliders_;  // one per thread: they keep scratch buffers
+  // One collider per thread (they keep scratch buffers), each on cache lines of its own: the
+  // ends of its buffers change at every push_back, and two threads' colliders side by side
+  // made each core wait for the other's line (false sharing).
+  struct alignas(64) ThreadCollider {
+    explicit ThreadCollider(const NarrowPhaseSettings& settings) : collider(settings) {}
+    BodyPairCollider collider;
+  };
+  std::vector<ThreadCollider> colliders_;
   std::vector<BroadPhaseProxy> proxies_;
   std::vector<ContactManifold> manifolds_;
   std::vector<BodyPair> near_pairs_;
@@ -82,6 +92,8 @@ class CollisionPipeline {
   std::vector<LeafPairCache> caches_;
   std::vector<LeafPairCache> next_caches_;
   std::vector<BodyPair> cache_pairs_;
+  static constexpr std::size_t kNoCache = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> cache_source_;  // per pair of this call: its index in caches_
   CollisionCounts counts_;
 };
 
