@@ -37,6 +37,7 @@ void relax() {
 
 ThreadPool::ThreadPool(int threads) {
   const int workers = std::max(threads, 1) - 1;
+  shares_ = std::make_unique<Share[]>(static_cast<std::size_t>(workers) + 1);
   workers_.reserve(static_cast<std::size_t>(workers));
   try {
     for (int i = 0; i < workers; ++i)
@@ -64,10 +65,39 @@ ThreadPool::~ThreadPool() {
   stop_workers();
 }
 
-void ThreadPool::run_chunks(int thread) {
+namespace {
+
+// A share's chunks [front, back) in one word, so that its owner (from the front) and thieves
+// (from the back) agree by one compare-and-swap.
+constexpr std::uint64_t pack(std::uint64_t front, std::uint64_t back) {
+  return front << 32 | back;
+}
+constexpr std::uint64_t front_of(std::uint64_t range) {
+  return range >> 32;
+}
+constexpr std::uint64_t back_of(std::uint64_t range) {
+  return range & 0xffffffffu;
+}
+
+}  // namespace
+
+bool ThreadPool::take_chunk(int owner, bool from_front, std::size_t& chunk) {
+  std::atomic<std::uint64_t>& range = shares_[static_cast<std::size_t>(owner)].range;
+  std::uint64_t r = range.load(std::memory_order_relaxed);
   for (;;) {
-    const std::size_t begin = next_.fetch_add(grain_, std::memory_order_relaxed);
-    if (begin >= count_) return;
+    const std::uint64_t front = front_of(r), back = back_of(r);
+    if (front >= back) return false;
+    const std::uint64_t taken = from_front ? pack(front + 1, back) : pack(front, back - 1);
+    if (range.compare_exchange_weak(r, taken, std::memory_order_relaxed)) {
+      chunk = static_cast<std::size_t>(from_front ? front : back - 1);
+      return true;
+    }
+  }
+}
+
+void ThreadPool::run_chunks(int thread) {
+  const auto run = [&](std::size_t chunk) {
+    const std::size_t begin = chunk * grain_;
     const std::size_t end = std::min(count_, begin + grain_);
     try {
       (*body_)(begin, end, thread);
@@ -75,6 +105,15 @@ void ThreadPool::run_chunks(int thread) {
       const std::lock_guard<std::mutex> lock(mutex_);
       if (!error_) error_ = std::current_exception();
     }
+  };
+  std::size_t chunk = 0;
+  while (take_chunk(thread, true, chunk))
+    run(chunk);
+  // Then help the others, from the far end of their shares.
+  for (int k = 1; k < size(); ++k) {
+    const int other = (thread + k) % size();
+    while (take_chunk(other, false, chunk))
+      run(chunk);
   }
 }
 
@@ -111,7 +150,8 @@ void ThreadPool::worker_main(int thread) {
 
 void ThreadPool::parallel_for(std::size_t count, std::size_t grain, const Body& body) {
   if (count == 0) return;
-  grain = std::max<std::size_t>(grain, 1);
+  // At least one index a chunk, and chunks few enough to number in 32 bits (see pack).
+  grain = std::max<std::size_t>({grain, 1, count >> 31});
   if (workers_.empty() || count <= grain) {
     for (std::size_t begin = 0; begin < count; begin += grain)
       body(begin, std::min(count, begin + grain), 0);
@@ -130,7 +170,13 @@ void ThreadPool::parallel_for(std::size_t count, std::size_t grain, const Body& 
     count_ = count;
     grain_ = grain;
     error_ = nullptr;
-    next_.store(0, std::memory_order_relaxed);
+    // Each thread's share of the chunks: the same stretch of indices at every loop, so that
+    // the data of a body pair stays in the caches of the core that worked on it last time.
+    const std::size_t chunks = (count + grain - 1) / grain;
+    const auto threads = static_cast<std::size_t>(size());
+    for (std::size_t t = 0; t < threads; ++t)
+      shares_[t].range.store(pack(t * chunks / threads, (t + 1) * chunks / threads),
+                             std::memory_order_relaxed);
     busy_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
     generation_.fetch_add(1, std::memory_order_release);
   }

@@ -1,8 +1,12 @@
 // A fixed set of worker threads for the engine's data-parallel loops (the narrow phase over the
 // body pairs of a step), built so that results never depend on the number of threads: every
 // index of a loop writes only its own slot, and the caller reads the slots in index order. How
-// the indices are shared out (each thread takes the next chunk as it becomes free) changes only
-// who computes a slot, never what is in it.
+// the indices are shared out changes only who computes a slot, never what is in it: each thread
+// owns a contiguous share of the chunks, the same at every loop of the same size, and works
+// through it from the front; a thread done with its own share takes chunks from the back of the
+// others'. So a body pair is mostly worked on by the same core step after step, its caches
+// warm there (with chunks handed to whichever thread was free, each thread ran about a fifth
+// slower than alone), and no thread idles while another has work left.
 //
 // Workers spin for a while after a loop before they block (twice the usual gap between loops,
 // within bounds), since the World asks for a loop every step, a fraction of a millisecond apart,
@@ -47,6 +51,8 @@ class ThreadPool {
   void stop_workers();
   // Takes chunks of the current loop until none are left.
   void run_chunks(int thread);
+  // Takes one chunk of `owner`'s share, from its front (the owner) or back (another thread).
+  bool take_chunk(int owner, bool from_front, std::size_t& chunk);
 
   std::vector<std::thread> workers_;
   std::mutex mutex_;
@@ -59,7 +65,10 @@ class ThreadPool {
   const Body* body_ = nullptr;
   std::size_t count_ = 0;
   std::size_t grain_ = 1;
-  std::atomic<std::size_t> next_{0};     // first index not yet taken
+  struct alignas(64) Share {
+    std::atomic<std::uint64_t> range{0};  // chunks [front, back) not yet taken (see pack)
+  };
+  std::unique_ptr<Share[]> shares_;      // per thread, the caller's first
   std::atomic<int> busy_{0};             // workers still in the current loop
   std::atomic<std::int64_t> gap_ns_{0};  // smoothed time between loops, ns (the spin budget)
   std::int64_t last_end_ns_ = 0;         // caller only: when the last loop ended, ns

@@ -34,6 +34,39 @@ TEST(ThreadPool, VisitsEveryIndexOnce) {
   }
 }
 
+// A thread done with its own share takes the chunks left in another's: here the caller holds
+// its first chunk until every other index is done, which only happens if the worker, after its
+// own half, works through the rest of the caller's half from the back.
+TEST(ThreadPool, AThreadDoneWithItsShareTakesTheRestOfAnother) {
+  ThreadPool pool(2);
+  constexpr std::size_t kCount = 8;
+  std::vector<int> ran_on(kCount, -1);
+  std::atomic<std::size_t> done{0};
+  bool waited_out = false;
+  pool.parallel_for(kCount, 1, [&](std::size_t begin, std::size_t, int thread) {
+    ran_on[begin] = thread;
+    if (begin == 0) {
+      const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+      while (done.load() < kCount - 1) {
+        if (std::chrono::steady_clock::now() > until) {
+          waited_out = true;
+          break;
+        }
+        std::this_thread::yield();
+      }
+    } else {
+      ++done;
+    }
+  });
+  ASSERT_FALSE(waited_out) << "the caller's other chunks were never taken";
+  // The caller's first take is always chunk 0 (then it waits there); if it came too late for
+  // even that one, the worker did everything.
+  for (std::size_t i = 1; i < kCount / 2; ++i)
+    EXPECT_EQ(ran_on[i], 1) << "index " << i << " of the caller's share";
+  for (std::size_t i = kCount / 2; i < kCount; ++i)
+    EXPECT_EQ(ran_on[i], 1) << "index " << i << " of the worker's own share";
+}
+
 // Many short loops back to back (as the World runs one per step): every one complete before
 // the next, with the workers spinning or asleep in between.
 TEST(ThreadPool, ManyShortLoopsInARow) {
