@@ -1,10 +1,5 @@
 #include "engine/dynamics/contact_forces.h"
 
-#include <algorithm>
-#include <cmath>
-
-#include "engine/dynamics/collision_impulse.h"
-
 namespace rugosim {
 
 ForceResult solve_contact_forces(std::span<const ForceBody> bodies,
@@ -14,19 +9,10 @@ ForceResult solve_contact_forces(std::span<const ForceBody> bodies,
   std::vector<VelocityRow> rows(contacts.size());
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const ForceContact& c = contacts[i];
+    const StartedRow started = start_row(bodies, c.body_a, c.body_b, c.point, c.normal, c.friction);
+    rows[i] = started.row;
     VelocityRow& r = rows[i];
-    const ForceBody& a = bodies[c.body_a];
-    const ForceBody& b = bodies[c.body_b];
-    r.body_a = c.body_a;
-    r.body_b = c.body_b;
-    r.point = c.point;
-    r.normal = c.normal;
-    r.friction = c.friction;
-    const ContactBodyState sa{a.inverse_mass, a.inverse_inertia, a.velocity, a.angular_velocity,
-                              c.point - a.position};
-    const ContactBodyState sb{b.inverse_mass, b.inverse_inertia, b.velocity, b.angular_velocity,
-                              c.point - b.position};
-    const Vec2 w = relative_contact_velocity(sa, sb);
+    const Vec2& w = started.velocity;
     const Vec2 a_g =
         (movable(c.body_a) ? gravity : Vec2::Zero()) - (movable(c.body_b) ? gravity : Vec2::Zero());
     const Vec2 tangent = perp(c.normal);

@@ -23,6 +23,24 @@ Vec2 point_change(const VelocityChange& c, const Vec2& arm) {
 
 }  // namespace
 
+StartedRow start_row(std::span<const SolverBody> bodies, std::size_t body_a, std::size_t body_b,
+                     const Vec2& point, const Vec2& normal, double friction) {
+  StartedRow out;
+  out.row.body_a = body_a;
+  out.row.body_b = body_b;
+  out.row.point = point;
+  out.row.normal = normal;
+  out.row.friction = friction;
+  const SolverBody& a = bodies[body_a];
+  const SolverBody& b = bodies[body_b];
+  const ContactBodyState sa{a.inverse_mass, a.inverse_inertia, a.velocity, a.angular_velocity,
+                            point - a.position};
+  const ContactBodyState sb{b.inverse_mass, b.inverse_inertia, b.velocity, b.angular_velocity,
+                            point - b.position};
+  out.velocity = relative_contact_velocity(sa, sb);
+  return out;
+}
+
 RowSolution solve_velocity_rows(std::span<const SolverBody> bodies, std::span<VelocityRow> rows,
                                 const SweepSettings& settings) {
   RowSolution result;

@@ -41,6 +41,16 @@ struct VelocityRow {
   Vec2 impulse = Vec2::Zero();  // N·s, (normal, tangent) on A: the warm start in, the solution out
 };
 
+// A row for a contact at `point` (m, world) with `normal` between bodies[body_a] and
+// bodies[body_b], its targets and impulse left at zero for the caller, and the contact's
+// relative velocity now, u = u_A − u_B (m/s, collision_impulse.h).
+struct StartedRow {
+  VelocityRow row;
+  Vec2 velocity = Vec2::Zero();
+};
+StartedRow start_row(std::span<const SolverBody> bodies, std::size_t body_a, std::size_t body_b,
+                     const Vec2& point, const Vec2& normal, double friction);
+
 // The velocity changes a solution makes, per body.
 struct VelocityChange {
   Vec2 velocity = Vec2::Zero();   // m/s

@@ -2,8 +2,6 @@
 
 #include <utility>
 
-#include "engine/dynamics/collision_impulse.h"
-
 namespace rugosim {
 
 SlowContactResult solve_slow_contacts(std::span<const SolverBody> bodies,
@@ -12,19 +10,10 @@ SlowContactResult solve_slow_contacts(std::span<const SolverBody> bodies,
   std::vector<VelocityRow> rows(contacts.size());
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const SlowContact& c = contacts[i];
+    const StartedRow started = start_row(bodies, c.body_a, c.body_b, c.point, c.normal, c.friction);
+    rows[i] = started.row;
     VelocityRow& r = rows[i];
-    const SolverBody& a = bodies[c.body_a];
-    const SolverBody& b = bodies[c.body_b];
-    r.body_a = c.body_a;
-    r.body_b = c.body_b;
-    r.point = c.point;
-    r.normal = c.normal;
-    r.friction = c.friction;
-    const ContactBodyState sa{a.inverse_mass, a.inverse_inertia, a.velocity, a.angular_velocity,
-                              c.point - a.position};
-    const ContactBodyState sb{b.inverse_mass, b.inverse_inertia, b.velocity, b.angular_velocity,
-                              c.point - b.position};
-    const Vec2 u = relative_contact_velocity(sa, sb);
+    const Vec2& u = started.velocity;
     r.normal_target = -c.allowance - u.dot(c.normal);
     r.tangent_target = -u.dot(perp(c.normal));
     r.impulse = c.impulse;
