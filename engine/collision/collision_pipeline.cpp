@@ -73,13 +73,20 @@ void CollisionPipeline::detect(std::span<const PlacedShape> bodies, ThreadPool* 
       result.leaf_pairs = collider.last_leaf_pairs().size();
     }
   };
-  if (threads > 1) {
-    // Small chunks: the cost of a pair ranges from a box test to a long search.
-    const std::size_t grain =
-        std::max<std::size_t>(1, pairs.size() / (32 * static_cast<std::size_t>(threads)));
-    pool->parallel_for(pairs.size(), grain, collide_pairs);
-  } else {
-    collide_pairs(0, pairs.size(), 0);
+  try {
+    if (threads > 1) {
+      // Small chunks: the cost of a pair ranges from a box test to a long search.
+      const std::size_t grain =
+          std::max<std::size_t>(1, pairs.size() / (32 * static_cast<std::size_t>(threads)));
+      pool->parallel_for(pairs.size(), grain, collide_pairs);
+    } else {
+      collide_pairs(0, pairs.size(), 0);
+    }
+  } catch (...) {
+    // Some caches were moved and some not: forget them all, so that the next call starts
+    // afresh (and alike whatever happened here).
+    cache_pairs_.clear();
+    throw;
   }
 
   std::swap(caches_, next_caches_);

@@ -172,9 +172,9 @@ void ThreadPool::parallel_for(std::size_t count, std::size_t grain, const Body& 
     error_ = nullptr;
     // Each thread's share of the chunks: the same stretch of indices at every loop, so that
     // the data of a body pair stays in the caches of the core that worked on it last time.
-    const std::size_t chunks = (count + grain - 1) / grain;
-    const auto threads = static_cast<std::size_t>(size());
-    for (std::size_t t = 0; t < threads; ++t)
+    const std::uint64_t chunks = count / grain + (count % grain != 0 ? 1 : 0);
+    const auto threads = static_cast<std::uint64_t>(size());
+    for (std::uint64_t t = 0; t < threads; ++t)
       shares_[t].range.store(pack(t * chunks / threads, (t + 1) * chunks / threads),
                              std::memory_order_relaxed);
     busy_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);

@@ -37,11 +37,11 @@ class ThreadPool {
 
   int size() const { return static_cast<int>(workers_.size()) + 1; }
 
-  // Calls body(begin, end, thread) on chunks of at most `grain` indices covering [0, count) once
-  // each, on the caller and the workers (thread in [0, size()), 0 for the caller), and returns
-  // when all are done. An exception thrown by body is rethrown here (the first one; with workers
-  // the other chunks still run, alone the caller stops at it). Not reentrant: one loop at a time
-  // per pool.
+  // Calls body(begin, end, thread) on chunks of at most `grain` indices (more only for a count
+  // of 2^31 grains or more, so that chunks number in 32 bits) covering [0, count) once each, on the
+  // caller and the workers (thread in [0, size()), 0 for the caller), and returns when all are
+  // done. An exception thrown by body is rethrown here (the first one; with workers the other
+  // chunks still run, alone the caller stops at it). Not reentrant: one loop at a time per pool.
   using Body = std::function<void(std::size_t begin, std::size_t end, int thread)>;
   void parallel_for(std::size_t count, std::size_t grain, const Body& body);
 

@@ -72,7 +72,9 @@ struct SweepSettings {
   // or `speed_floor` when that is more. Only the pushes a row asks for set the scale: a wide
   // gap's large negative target must not loosen the tolerance of the contacts that rest.
   double tolerance = 1e-9;
-  double speed_floor = 0.0;  // m/s
+  // m/s, > 0 in practice (the World's |g|·max_step): at 0, a set of rows that asks for no push
+  // converges only when a sweep changes nothing at all.
+  double speed_floor = 0.0;
 };
 
 // Solves the rows. A warm start is first clamped into the cone (x_n ≥ 0, |x_t| ≤ μ x_n). A row

@@ -42,7 +42,7 @@ struct SlowContactResult {
 
 // The impulses for contacts between `bodies` (their velocities now). A contact separating or
 // approaching within its allowance gets none unless another contact's impulse makes it
-// approach. The scale of the tolerance is `speed_floor` (m/s; the World passes |g|·max_step),
+// approach. The scale of the tolerance is `speed_floor` (m/s; |g|·max_step for a World),
 // or the fastest excess approach when that is more.
 SlowContactResult solve_slow_contacts(std::span<const SolverBody> bodies,
                                       std::span<SlowContact> contacts,

@@ -168,6 +168,24 @@ TEST(SlowContacts, ItsOwnSolutionAsAWarmStartConvergesInOneSweepToTheSameImpulse
   EXPECT_EQ(third.sweeps, first.sweeps);
 }
 
+// A warm start outside the cone (a pull, or more friction than μ allows) is clamped into it
+// first, and the one contact's answer is the cold start's.
+TEST(SlowContacts, AWarmStartOutsideTheConeIsClampedAndChangesNotTheAnswer) {
+  const double mass = 1.5, radius = 0.2, mu = 0.4;
+  const std::vector<SolverBody> bodies{fixed_floor(),
+                                       disk(mass, radius, Vec2(0.0, radius), Vec2(0.003, -0.01))};
+  std::vector<SlowContact> cold{on_floor(1, bodies[1], radius, 0.0, mu)};
+  solve_slow_contacts(bodies, cold, settings());
+  for (const Vec2& warm : {Vec2(-3.0, 5.0), Vec2(2.0, -5.0), Vec2(0.001, 0.5)}) {
+    std::vector<SlowContact> contacts{on_floor(1, bodies[1], radius, 0.0, mu)};
+    contacts[0].impulse = warm;
+    const SlowContactResult r = solve_slow_contacts(bodies, contacts, settings());
+    EXPECT_TRUE(r.converged) << warm.transpose();
+    EXPECT_LT((contacts[0].impulse - cold[0].impulse).norm(), 1e-12) << warm.transpose();
+    EXPECT_LE(std::abs(contacts[0].impulse.y()), mu * contacts[0].impulse.x() * (1.0 + 1e-12));
+  }
+}
+
 TEST(SlowContacts, AContactBetweenFixedBodiesStaysAtZeroWhateverItsWarmStart) {
   const std::vector<SolverBody> bodies{fixed_floor(), fixed_floor()};
   SlowContact c;
