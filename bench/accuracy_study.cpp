@@ -48,6 +48,7 @@ std::vector<Setting> settings() {
   }
   const std::map<std::string, std::vector<double>> sweeps = {
       {"max_step", {8e-3, 4e-3, 2e-3, 5e-4, 2.5e-4, 1.25e-4}},
+      {"rest_stride", {2, 4, 8, 16}},
       {"toi_tolerance", {1e-5, 1e-7, 1e-11}},
       {"max_bisections", {8, 20}},
       {"newton_tolerance", {1e-6, 1e-9, 1e-14}},
@@ -69,6 +70,7 @@ std::vector<Setting> settings() {
 // The tightest settings of the study: the figure scenes' reference.
 Accuracy reference_accuracy() {
   return Accuracy{.max_step = 6.25e-5,
+                  .rest_stride = 1,
                   .toi_tolerance = 1e-11,
                   .max_bisections = 200,
                   .newton_tolerance = 1e-14,

@@ -34,6 +34,7 @@ CollisionShape::CollisionShape(PeriodicBSpline curve, ToleranceProfile tolerance
   // A few roundings wider than the exact largest λ_j(t): ToleranceProfile::at evaluates the same
   // cubic another way, and a band must never exceed this bound, even by an ulp.
   segment_band_.reserve(curve_.size());
+  least_band_ = std::max(tolerances_.range().lo, min_band_);
   for (std::size_t j = 0; j < curve_.size(); ++j) {
     segment_band_.push_back(std::max(tolerances_.segment_range(j).hi, min_band_) *
                             (1.0 + 16.0 * std::numeric_limits<double>::epsilon()));

@@ -34,6 +34,9 @@ class CollisionShape {
   // m: the largest tolerance λ_j(t) over segment j (ToleranceProfile::segment_range), at least
   // min_band(): no contact on segment j can have a wider share of the band.
   double segment_band(std::size_t j) const { return segment_band_[j]; }
+  // m: the least tolerance λ(t) anywhere on the boundary, at least min_band(): no contact of
+  // this body has a narrower share of the band.
+  double least_band() const { return least_band_; }
 
   // World box around the placed body and its tolerance band, for the broad phase.
   Aabb world_bounds(const Transform2& placement) const;
@@ -46,6 +49,7 @@ class CollisionShape {
   PeriodicBSpline curve_;
   ToleranceProfile tolerances_;
   double min_band_ = 0.0;
+  double least_band_ = 0.0;
   std::vector<double> segment_band_;  // m, per segment
   std::uint64_t id_ = 0;
   AobbTree tree_;

@@ -34,6 +34,8 @@ const std::vector<AccuracyKnob>& accuracy_knobs() {
   static const std::vector<AccuracyKnob> knobs = {
       {"max_step", "s", "the longest internal step", false, 0.0, true, 1.0, &Accuracy::max_step,
        nullptr},
+      {"rest_stride", "", "a step near contacts that close gently may last this many max_steps",
+       true, 1, false, 1024, nullptr, &Accuracy::rest_stride},
       {"toi_tolerance", "s", "time-of-impact bisection stops at this step", false, 0.0, true, 1.0,
        &Accuracy::toi_tolerance, nullptr},
       {"max_bisections", "", "bisections of one step at most", true, 1, false, 200, nullptr,
@@ -103,6 +105,7 @@ WorldSettings with_accuracy(WorldSettings base, const Accuracy& accuracy) {
                                 " s)");
   }
   base.max_step = accuracy.max_step;
+  base.rest_stride = accuracy.rest_stride;
   base.min_step = accuracy.toi_tolerance;
   base.max_bisections = accuracy.max_bisections;
   base.max_resolution_passes = accuracy.contact_passes;

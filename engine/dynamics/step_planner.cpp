@@ -62,7 +62,25 @@ double StepPlanner::tunnel_free(std::span<const RigidBody> bodies,
   }
   // Every pair together moves at most twice the fastest body's reach.
   if (2.0 * (fastest * h + 0.5 * g * h * h) <= 0.5 * thinnest) return h;
+  const double safe = longest_step(bodies, moves, g, h, [&](std::size_t i, std::size_t j) {
+    return 0.5 * std::min(bodies[i].thickness(), bodies[j].thickness());
+  });
+  // Never below min_step (speeds beyond that are refused by the scene layer), never above h.
+  return std::min(h, std::max(safe, min_step));
+}
 
+double StepPlanner::gentle_step(std::span<const RigidBody> bodies,
+                                std::span<const std::uint8_t> moves, const Vec2& gravity, double h,
+                                double band_share) {
+  return longest_step(bodies, moves, gravity.norm(), h, [&](std::size_t i, std::size_t j) {
+    return band_share * (bodies[i].shape().least_band() + bodies[j].shape().least_band());
+  });
+}
+
+template <typename PairLimit>
+double StepPlanner::longest_step(std::span<const RigidBody> bodies,
+                                 std::span<const std::uint8_t> moves, double g, double h,
+                                 const PairLimit& pair_limit) {
   // Candidate pairs: boxes grown by each mover's own reach (speed and gravity) meet whenever a
   // pair's relative reach below could, so the sweep finds every pair that test would.
   boxes_.resize(bodies.size());
@@ -89,15 +107,14 @@ double StepPlanner::tunnel_free(std::span<const RigidBody> bodies,
         j_moves ? relative_boundary_speed(bodies[i], bodies[j]) : bodies[i].boundary_speed();
     const double b = j_moves ? 0.0 : 0.5 * g;
     const double reach = a * h + b * h * h;
-    const double limit = 0.5 * std::min(bodies[i].thickness(), bodies[j].thickness());
+    const double limit = pair_limit(i, j);
     if (reach <= limit) continue;
     if (!grown(boxes_[i], reach).overlaps(boxes_[j])) continue;
     // The largest dt with a·dt + b·dt² <= limit.
     const double dt = b > 0.0 ? 2.0 * limit / (a + std::sqrt(a * a + 4.0 * b * limit)) : limit / a;
     safe = std::min(safe, dt);
   }
-  // Never below min_step (speeds beyond that are refused by the scene layer), never above h.
-  return std::min(h, std::max(safe, min_step));
+  return safe;
 }
 
 }  // namespace rugosim

@@ -40,7 +40,20 @@ class StepPlanner {
   double tunnel_free(std::span<const RigidBody> bodies, std::span<const std::uint8_t> moves,
                      const Vec2& gravity, double h, double min_step);
 
+  // The longest step, at most h (s), in which every pair that can come within its bands moves,
+  // relative to each other, at most band_share of the narrowest band the two can meet with
+  // (CollisionShape::least_band of each): a step in which contacts are found as shallow in their
+  // bands as that share. 0 when some pair is already closing that far at once.
+  double gentle_step(std::span<const RigidBody> bodies, std::span<const std::uint8_t> moves,
+                     const Vec2& gravity, double h, double band_share);
+
  private:
+  // The longest step, at most h, in which every pair that can meet moves relative to each other
+  // at most pair_limit(i, j) (m).
+  template <typename PairLimit>
+  double longest_step(std::span<const RigidBody> bodies, std::span<const std::uint8_t> moves,
+                      double g, double h, const PairLimit& pair_limit);
+
   SweepAndPrune broad_phase_;
   std::vector<BroadPhaseProxy> proxies_;
   std::vector<Aabb> boxes_;

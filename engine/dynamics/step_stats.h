@@ -34,6 +34,9 @@ struct StepStats {
   std::uint64_t idle_jumps = 0;
   // Steps taken whole to the target time because no two bodies could meet in them.
   std::uint64_t free_steps = 0;
+  // Steps near contact longer than max_step because every pair that could meet in them moved
+  // gently (WorldSettings::rest_stride).
+  std::uint64_t rest_steps = 0;
   // Awake movable bodies summed over the steps: the work a step's cost grows with (wall time
   // per body-step compares scenes of different sizes).
   std::uint64_t body_steps = 0;

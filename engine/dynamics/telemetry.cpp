@@ -102,6 +102,7 @@ std::string stats_json(const StepStats& s, double wall_time, const Accuracy* acc
   counter("islands_woken", s.islands_woken);
   counter("idle_jumps", s.idle_jumps);
   counter("free_steps", s.free_steps);
+  counter("rest_steps", s.rest_steps);
   counter("body_steps", s.body_steps);
   out.append("  \"sim_time\": ");
   append_number(out, s.sim_time);

@@ -60,6 +60,10 @@ World::World(WorldSettings settings)
         std::isfinite(settings_.max_step))) {
     throw std::invalid_argument("steps must satisfy 0 < min_step <= max_step < inf (s)");
   }
+  if (settings_.rest_stride < 1 || settings_.rest_stride > kMaxRestStride) {
+    throw std::invalid_argument("rest_stride must be in [1, " + std::to_string(kMaxRestStride) +
+                                "]");
+  }
   if (settings_.max_bisections <= 0 || settings_.max_resolution_passes <= 0) {
     throw std::invalid_argument("max_bisections and max_resolution_passes must be > 0");
   }
@@ -486,6 +490,17 @@ double World::next_step(double remaining) {
         ++stats_.free_steps;
         return h;
       }
+    }
+  }
+  // Near contact, a step may still be long when every pair that can meet in it moves gently:
+  // then contacts are found no deeper in their bands than impacts at max_step find them.
+  if (settings_.rest_stride > 1 && remaining > settings_.max_step) {
+    const double longest = std::min(remaining, settings_.rest_stride * settings_.max_step);
+    const double h =
+        planner_.gentle_step(bodies_, awake_, settings_.gravity, longest, kRestBandShare);
+    if (h > settings_.max_step) {
+      ++stats_.rest_steps;
+      return planner_.tunnel_free(bodies_, awake_, settings_.gravity, h, settings_.min_step);
     }
   }
   return planner_.tunnel_free(bodies_, awake_, settings_.gravity,

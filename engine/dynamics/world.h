@@ -85,9 +85,15 @@ struct WorldSettings {
   // k in μ = k·max(0, λ − λ_min), 1/m: 100/m gives μ = 0.1 for λ − λ_min = 1 mm, the scale of
   // the rugosities of the paper's examples in metres.
   double friction_gain = 100.0;
-  // s: the longest internal step. 1 ms keeps a 1 m fall at 4.4 m/s to 4.4 mm per step, so a
-  // pile is checked often enough for contacts to be found near where they begin.
+  // s: the longest internal step near a contact that closes (or opens) fast. 1 ms keeps a 1 m
+  // fall at 4.4 m/s to 4.4 mm per step, so a pile is checked often enough for contacts to be
+  // found near where they begin.
   double max_step = 1e-3;
+  // A step in which every pair that can come within its bands moves, relative to each other,
+  // at most kRestBandShare of its narrowest bands may last up to this many max_steps (a rest
+  // step): resting and slowly rolling bodies are looked at less often than impacts. 1 keeps
+  // every step near contact at max_step.
+  int rest_stride = 1;
   // s: bisection stops below this step. 1e-9 s at 10 m/s is 10 nm, below the minimum band
   // (1e-6 of a 1 m body), so a contact is normally caught before the bound is reached.
   double min_step = 1e-9;
@@ -124,6 +130,11 @@ class World {
   // of it (for a gap that closes faster than the band is thick over min_step).
   static constexpr double kFinestStepShare = 1.0 / 1024.0;
   static constexpr int kMaxThreads = 256;
+  // The share of a pair's narrowest bands (CollisionShape::least_band of each) it may close in
+  // a rest step: half, so that a contact a rest step brings is found at most half as deep in its
+  // band as a fall of max_step at v = band / max_step would bring it (3 mm at 1 ms is 3 m/s).
+  static constexpr double kRestBandShare = 0.5;
+  static constexpr int kMaxRestStride = 1024;
 
   // Throws std::invalid_argument on non-finite gravity, a negative friction gain, steps that
   // are not 0 < min_step <= max_step, non-positive loop bounds, narrow-phase settings out of

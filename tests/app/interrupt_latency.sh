@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Ctrl-C in the middle of a step loop: simulate and render of a run that crawls through
-# millions of short steps (tests/app/crawling_bodies.json with a 1 µs step, a frame a second)
-# stop within a step, not at the next frame seconds away (1.6 s after SIGINT before the World
-# polled the flag): exit 130 soon after SIGINT, with what was done written.
+# millions of short steps (tests/app/crawling_bodies.json with a 1 µs step and rest steps off, a
+# frame a second) stop within a step, not at the next frame seconds away (1.6 s after SIGINT
+# before the World polled the flag): exit 130 soon after SIGINT, with what was done written.
 # Usage: interrupt_latency.sh PROGRAM SOURCE_DIR WORK_DIR
 set -u
 program=$1 source=$2 work=$3
@@ -33,11 +33,11 @@ interrupt() {  # interrupt NAME ARGS...: runs the program, SIGINT after 1.5 s, c
   echo "$name: exit 130 $ms ms after SIGINT"
 }
 
-interrupt simulate simulate "$scene" --max-step 1e-6 --toi-tolerance 1e-9 --fps 1 --duration 5 \
+interrupt simulate simulate "$scene" --max-step 1e-6 --rest-stride 1 --toi-tolerance 1e-9 --fps 1 --duration 5 \
   --trajectory "$work/trajectory.csv"
 [ -f "$work/trajectory.csv" ] || fail "simulate: no trajectory.csv"
 awk -F, 'NR > 1 && NF != 10 { bad = 1 } END { exit bad }' "$work/trajectory.csv" \
   || fail "simulate: a partial row"
-interrupt render render "$scene" --max-step 1e-6 --toi-tolerance 1e-9 --fps 1 --duration 5 --size 64x64 -y \
-  -o "$work/clip.mp4"
+interrupt render render "$scene" --max-step 1e-6 --rest-stride 1 --toi-tolerance 1e-9 --fps 1 --duration 5 \
+  --size 64x64 -y -o "$work/clip.mp4"
 rm -rf "$work"

@@ -13,6 +13,7 @@
 #include "engine/dynamics/free_flight.h"
 #include "engine/dynamics/world.h"
 #include "support/test_bodies.h"
+#include "support/test_output.h"
 
 namespace rugosim {
 namespace {
@@ -42,17 +43,13 @@ std::vector<RigidBody> random_crowd(Rng& rng, std::size_t n, double speed,
   return bodies;
 }
 
-// The tunnelling bound as it was computed before the sweep: every pair tested.
-double all_pairs_tunnel_free(const std::vector<RigidBody>& bodies,
-                             const std::vector<std::uint8_t>& moves, double h, double min_step) {
+// The longest step, at most h, in which every pair moves relative to each other at most
+// limit(i, j), computed as before the sweep: every pair tested.
+template <typename Limit>
+double all_pairs_longest_step(const std::vector<RigidBody>& bodies,
+                              const std::vector<std::uint8_t>& moves, double h,
+                              const Limit& limit) {
   const double g = kGravity.norm();
-  double thinnest = std::numeric_limits<double>::infinity();
-  double fastest = 0.0;
-  for (std::size_t i = 0; i < bodies.size(); ++i) {
-    thinnest = std::min(thinnest, bodies[i].thickness());
-    if (moves[i] != 0) fastest = std::max(fastest, bodies[i].boundary_speed());
-  }
-  if (2.0 * (fastest * h + 0.5 * g * h * h) <= 0.5 * thinnest) return h;
   double safe = h;
   for (std::size_t i = 0; i < bodies.size(); ++i) {
     if (moves[i] == 0) continue;
@@ -67,17 +64,33 @@ double all_pairs_tunnel_free(const std::vector<RigidBody>& bodies,
                                : bodies[i].boundary_speed();
       const double b = j_moves ? 0.0 : 0.5 * g;
       const double reach = a * h + b * h * h;
-      const double limit = 0.5 * std::min(bodies[i].thickness(), bodies[j].thickness());
-      if (reach <= limit) continue;
+      const double most = limit(i, j);
+      if (reach <= most) continue;
       Aabb grown = bodies[i].shape().world_bounds(bodies[i].placement());
       grown.min -= Vec2::Constant(reach);
       grown.max += Vec2::Constant(reach);
       if (!grown.overlaps(bodies[j].shape().world_bounds(bodies[j].placement()))) continue;
-      const double dt =
-          b > 0.0 ? 2.0 * limit / (a + std::sqrt(a * a + 4.0 * b * limit)) : limit / a;
+      const double dt = b > 0.0 ? 2.0 * most / (a + std::sqrt(a * a + 4.0 * b * most)) : most / a;
       safe = std::min(safe, dt);
     }
   }
+  return safe;
+}
+
+// The tunnelling bound as it was computed before the sweep: every pair tested.
+double all_pairs_tunnel_free(const std::vector<RigidBody>& bodies,
+                             const std::vector<std::uint8_t>& moves, double h, double min_step) {
+  const double g = kGravity.norm();
+  double thinnest = std::numeric_limits<double>::infinity();
+  double fastest = 0.0;
+  for (std::size_t i = 0; i < bodies.size(); ++i) {
+    thinnest = std::min(thinnest, bodies[i].thickness());
+    if (moves[i] != 0) fastest = std::max(fastest, bodies[i].boundary_speed());
+  }
+  if (2.0 * (fastest * h + 0.5 * g * h * h) <= 0.5 * thinnest) return h;
+  const double safe = all_pairs_longest_step(bodies, moves, h, [&](std::size_t i, std::size_t j) {
+    return 0.5 * std::min(bodies[i].thickness(), bodies[j].thickness());
+  });
   return std::min(h, std::max(safe, min_step));
 }
 
@@ -97,6 +110,51 @@ TEST(StepPlanner, TunnelFreeStepEqualsTheAllPairsBound) {
     cut += expected < h ? 1 : 0;
   }
   EXPECT_GT(cut, 50);  // the cases do cut steps
+}
+
+// The gentle step (rest steps, WorldSettings::rest_stride) finds every pair the all-pairs test
+// does too: the same step, bit for bit, for crowds from resting to fast.
+TEST(StepPlanner, GentleStepEqualsTheAllPairsBandBound) {
+  Rng rng(81);
+  StepPlanner planner;
+  int cut = 0, whole = 0;
+  for (int c = 0; c < 200; ++c) {
+    std::vector<std::uint8_t> moves;
+    const std::vector<RigidBody> bodies =
+        random_crowd(rng, 5 + static_cast<std::size_t>(rng.uniform(0.0, 60.0)),
+                     std::pow(10.0, rng.uniform(-4.0, 0.0)), moves);
+    const double h = std::pow(10.0, rng.uniform(-4.0, -1.5));
+    const double share = rng.uniform(0.1, 1.0);
+    const double expected =
+        all_pairs_longest_step(bodies, moves, h, [&](std::size_t i, std::size_t j) {
+          return share * (bodies[i].shape().least_band() + bodies[j].shape().least_band());
+        });
+    EXPECT_EQ(planner.gentle_step(bodies, moves, kGravity, h, share), expected) << "case " << c;
+    cut += expected < h ? 1 : 0;
+    whole += expected == h ? 1 : 0;
+  }
+  EXPECT_GT(cut, 30);    // the cases do cut steps
+  EXPECT_GT(whole, 30);  // and some are gentle all the way
+}
+
+// A disk resting in a floor's band moves gently; the same disk closing on the floor at 3 m/s
+// does not: its gentle step is the time it takes to cover half the pair's bands.
+TEST(StepPlanner, ResterMovesGentlyAndAnImpactDoesNot) {
+  const Material m;
+  std::vector<RigidBody> bodies;
+  bodies.push_back(testing::floor_block(2.0, 0.2, 0.0, m, 2e-3));
+  bodies.push_back(testing::disk(0.1, 32, Vec2(0.0, 0.1 + 1e-3), Vec2(0.0, -0.005), m, 2e-3));
+  const std::vector<std::uint8_t> moves = {0, 1};
+  StepPlanner planner;
+  EXPECT_EQ(planner.gentle_step(bodies, moves, kGravity, 4e-3, 0.5), 4e-3);
+  BodyState falling = bodies[1].state();
+  falling.velocity = Vec2(0.0, -3.0);
+  bodies[1].set_state(falling);
+  const double bands = bodies[0].shape().least_band() + bodies[1].shape().least_band();
+  const double h = planner.gentle_step(bodies, moves, kGravity, 4e-3, 0.5);
+  EXPECT_LT(h, 1e-3);
+  // 3 m/s·h + ½g·h² is half the bands.
+  EXPECT_NEAR(3.0 * h + 0.5 * kGravity.norm() * h * h, 0.5 * bands, 1e-15);
 }
 
 // The relative reach the bound rests on holds for real motions: over free flight, no boundary
@@ -251,6 +309,36 @@ TEST(StepPlanner, WorldStepsToTheTargetWhileNothingCanMeet) {
   const BodyState exact = free_flight(start, settings.gravity, 1.0);
   EXPECT_NEAR(world.body(0).state().position.y(), exact.position.y(), 1e-12 * 100.0);
   EXPECT_NEAR(world.body(0).state().velocity.y(), exact.velocity.y(), 1e-12 * 60.0);
+}
+
+// Rest steps: a rough disk dropped on a rough floor comes to rest in its band and sleeps as it
+// does with every step near contact at max_step, in fewer steps, some of them rest steps, none
+// crossing; with rest_stride 1 no step is a rest step.
+TEST(StepPlanner, RestStepsLetARestingDiskTakeLongerStepsAndStillRestInItsBand) {
+  auto run = [](int stride) {
+    WorldSettings settings;
+    settings.rest_stride = stride;
+    World world(settings);
+    const Material m = testing::make_material(0.5, 0.5);
+    world.add_body(testing::floor_block(4.0, 0.4, 0.0, m, 2e-3), "floor");
+    world.add_body(testing::disk(0.2, 48, Vec2(0.0, 0.3), Vec2::Zero(), m, 2e-3), "disk");
+    for (int frame = 1; frame <= 60; ++frame)
+      world.advance_to(frame / 20.0);
+    return world;
+  };
+  const World every = run(1);
+  const World rests = run(4);
+  EXPECT_EQ(every.stats().rest_steps, 0u);
+  EXPECT_GT(rests.stats().rest_steps, 100u);
+  EXPECT_LT(rests.stats().steps, every.stats().steps);
+  for (const World* world : {&every, &rests}) {
+    EXPECT_EQ(world->stats().crossings, 0u);
+    EXPECT_TRUE(world->asleep(1));
+  }
+  // Both rest in the pair's band (3.6 mm together): where they rest differs by less than it.
+  EXPECT_NEAR(rests.body(1).state().position.y(), every.body(1).state().position.y(), 3.6e-3);
+  RecordProperty("steps_every", std::to_string(every.stats().steps));
+  RecordProperty("steps_rests", std::to_string(rests.stats().steps));
 }
 
 }  // namespace
