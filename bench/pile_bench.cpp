@@ -13,6 +13,9 @@
 // bodies of 0.1 to 10 m). Every rugosim contact here has μ = k·λ = 100/m · 2.7 mm = 0.27
 // (λ_min = 0), which Box2D gets on every fixture, with the same ε = 0.3 and densities.
 //
+// pile/normal_rest_stride_4_* is normal with rest steps (WorldSettings::rest_stride 4), off in
+// the presets: what they would save.
+//
 // Counters: wall_per_sim_s; ns_per_body_step, the wall time per awake body and step (how cost
 // grows with the work); detection_s, the collision detection's share (World::profile); asleep_at,
 // when every body slept (−1: not within 5 s); and the step statistics.
@@ -53,12 +56,14 @@ struct RugosimRun {
   std::string preset;
   int threads = 1;
   bool sleeping = true;
+  int rest_stride = 0;  // 0: the preset's
 };
 
 void pile_rugosim(benchmark::State& state, const RugosimRun& run) {
   const std::vector<testing::PileBody> scene = testing::pile_scene(spec_for(state.range(0)));
   WorldSettings settings = with_accuracy(WorldSettings{}, *accuracy_preset(run.preset));
   settings.sleep.enabled = run.sleeping;
+  if (run.rest_stride > 0) settings.rest_stride = run.rest_stride;
   settings.record_events = false;
   settings.threads = run.threads;
   StepStats stats;
@@ -159,6 +164,17 @@ void register_all() {
         add("pile/" + preset + "_" + std::to_string(threads) +
                 (threads == 1 ? "_thread" : "_threads"),
             n, repetitions, [run](benchmark::State& s) { pile_rugosim(s, run); });
+      }
+    }
+    // What rest steps save (WorldSettings::rest_stride; off in the presets, since they let a
+    // body resting on a slope creep more): normal with steps near resting contact up to 4 ms.
+    if (n <= 200) {
+      for (const int threads : {1, cpus}) {
+        const RugosimRun run{"normal", threads, true, 4};
+        add("pile/normal_rest_stride_4_" + std::to_string(threads) +
+                (threads == 1 ? "_thread" : "_threads"),
+            n, repetitions, [run](benchmark::State& s) { pile_rugosim(s, run); });
+        if (cpus == 1) break;
       }
     }
     // What sleeping saves (awake for the whole 5 s: the big pile is left out).
