@@ -88,6 +88,12 @@ ResolutionCounts ContactResolver::resolve(std::span<RigidBody> bodies,
     const ContactManifold& m = manifolds[refs[i].manifold];
     const Contact& c = m.contacts[refs[i].contact];
     plans[i].statics = contact_statics(bodies[m.body_a], bodies[m.body_b], c, settings);
+    const RestedPair* rested = find_rested(settings.rested, m.body_a, m.body_b);
+    ContactStatics& k = plans[i].statics;
+    if (rested != nullptr && k.delta <= deep_share(settings) * k.band) {
+      k.resolved_speed =
+          std::max(k.resolved_speed, k.pressing * settings.rest_step + rested->allowance);
+    }
     plans[i].state_a = contact_state(bodies[m.body_a], c.point);
     plans[i].state_b = contact_state(bodies[m.body_b], c.point);
   }

@@ -42,6 +42,7 @@
 #include "engine/collision/contact.h"
 #include "engine/core/types.h"
 #include "engine/dynamics/event_record.h"
+#include "engine/dynamics/mid_step_rest.h"
 #include "engine/dynamics/rigid_body.h"
 
 namespace rugosim {
@@ -52,6 +53,18 @@ struct ResolutionSettings {
   int max_passes = 64;                  // bound on passes over all contacts
   double max_step = 1e-3;               // s, the World's longest step
   double resolved_gap_fraction = 1e-3;  // see "Resolved" above
+  // s: the step just taken when slow contacts rest at mid-step (mid_step_rest.h), else 0. An
+  // approach slower than g_n times it is what the step's own gravity brought since the
+  // mid-step impulses, which the next step's mid-step impulses answer: a micro-collision here
+  // would count friction twice.
+  double rest_step = 0.0;
+  // The pairs that got mid-step impulses in that step, sorted by (body_a, body_b): an approach
+  // up to their allowance plus g_n·rest_step is left to the next step's impulses too.
+  std::span<const RestedPair> rested;
+  // Share of its band a contact rests in at mid-step (mid_step_rest.h): a contact deeper than
+  // that is not left to the mid-step impulses, whose allowance only stops its approach; it gets
+  // its micro-collision, which lifts it back.
+  double rest_depth = MidStepRestSettings{}.rest_depth;
 };
 
 struct ResolutionCounts {

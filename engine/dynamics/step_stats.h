@@ -37,6 +37,12 @@ struct StepStats {
   // Steps near contact longer than max_step because every pair that could meet in them moved
   // gently (WorldSettings::rest_stride).
   std::uint64_t rest_steps = 0;
+  // Mid-step resting contact (WorldSettings::mid_step_rest, mid_step_rest.h): contact rows
+  // solved, summed over the (sub-)steps; their Gauss-Seidel sweeps; and the solves whose sweeps
+  // ran out before converging (the impulses so far are kept: the next step starts from there).
+  std::uint64_t rest_contacts = 0;
+  std::uint64_t rest_sweeps = 0;
+  std::uint64_t rest_unconverged = 0;
   // Awake movable bodies summed over the steps: the work a step's cost grows with (wall time
   // per body-step compares scenes of different sizes).
   std::uint64_t body_steps = 0;

@@ -13,6 +13,7 @@
 #include "engine/core/disjoint_sets.h"
 #include "engine/dynamics/contact_resolution.h"
 #include "engine/dynamics/free_flight.h"
+#include "engine/dynamics/mid_step_rest.h"
 #include "engine/dynamics/overlap_depth.h"
 
 namespace rugosim {
@@ -63,6 +64,9 @@ World::World(WorldSettings settings)
   if (settings_.rest_stride < 1 || settings_.rest_stride > kMaxRestStride) {
     throw std::invalid_argument("rest_stride must be in [1, " + std::to_string(kMaxRestStride) +
                                 "]");
+  }
+  if (!(settings_.rest_depth > 0.0 && settings_.rest_depth < 1.0)) {
+    throw std::invalid_argument("rest_depth must be in (0, 1)");
   }
   if (settings_.max_bisections <= 0 || settings_.max_resolution_passes <= 0) {
     throw std::invalid_argument("max_bisections and max_resolution_passes must be > 0");
@@ -291,9 +295,14 @@ void World::record_first_crossing(const std::vector<ContactManifold>& manifolds,
 }
 
 void World::resolve(const std::vector<ContactManifold>& manifolds, double time) {
-  const ResolutionSettings resolution{settings_.gravity, settings_.friction_gain,
-                                      settings_.max_resolution_passes, settings_.max_step,
-                                      settings_.resolved_gap_fraction};
+  const ResolutionSettings resolution{settings_.gravity,
+                                      settings_.friction_gain,
+                                      settings_.max_resolution_passes,
+                                      settings_.max_step,
+                                      settings_.resolved_gap_fraction,
+                                      rest_step_,
+                                      rested_,
+                                      settings_.rest_depth};
   ++stats_.steps;
   if (any_crossing(manifolds)) {
     ++stats_.crossings;
@@ -350,6 +359,21 @@ void World::join_islands_within_reach(DisjointSets& islands,
   }
 }
 
+void World::rest_at_mid_step(const std::vector<ContactManifold>& manifolds, double h) {
+  rest_step_ = 0.0;
+  rested_.clear();
+  if (!settings_.mid_step_rest) return;
+  MidStepRestSettings rest{settings_.gravity, settings_.friction_gain, settings_.rest_depth, {}};
+  rest.sweeps.tolerance = kRestTolerance;
+  rest.sweeps.speed_floor = settings_.gravity.norm() * settings_.max_step;
+  MidStepRestCounts counts = rugosim::rest_at_mid_step(bodies_, moving_, manifolds, h, rest);
+  rest_step_ = h;
+  rested_ = std::move(counts.rested);
+  stats_.rest_contacts += counts.contacts;
+  stats_.rest_sweeps += counts.sweeps;
+  if (!counts.converged) ++stats_.rest_unconverged;
+}
+
 void World::advance_crossing_members(double h) {
   double local = 0.0;         // s after time_ reached by the members
   bool trial_crosses = true;  // the caller found the move to h crossing
@@ -367,6 +391,7 @@ void World::advance_crossing_members(double h) {
       return;
     }
     if (!trial_crosses) {
+      rest_at_mid_step(accepted_, dt_full);
       save_start();
       place_at(dt_full);
       detect();
@@ -392,6 +417,7 @@ void World::step(double h) {
   }
   stats_.body_steps += movers.size();
   set_members(std::move(movers));
+  rest_at_mid_step(manifolds_, h);
   save_start();
   place_at(h);
   detect();

@@ -64,6 +64,7 @@
 #include "engine/dynamics/contact_resolution.h"
 #include "engine/dynamics/containment.h"
 #include "engine/dynamics/event_record.h"
+#include "engine/dynamics/mid_step_rest.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/dynamics/sleep_tracker.h"
 #include "engine/dynamics/step_planner.h"
@@ -94,6 +95,12 @@ struct WorldSettings {
   // step): resting and slowly rolling bodies are looked at less often than impacts. 1 keeps
   // every step near contact at max_step.
   int rest_stride = 1;
+  // Slow contacts get their impulses at the start of each step, on the mid-step velocities
+  // (mid_step_rest.h), and micro-collisions answer only faster approaches.
+  bool mid_step_rest = false;
+  // Share of its band a contact resting at mid-step reaches into it (mid_step_rest.h), in
+  // (0, 1).
+  double rest_depth = MidStepRestSettings{}.rest_depth;
   // s: bisection stops below this step. 1e-9 s at 10 m/s is 10 nm, below the minimum band
   // (1e-6 of a 1 m body), so a contact is normally caught before the bound is reached.
   double min_step = 1e-9;
@@ -135,6 +142,9 @@ class World {
   // band as a fall of max_step at v = band / max_step would bring it (3 mm at 1 ms is 3 m/s).
   static constexpr double kRestBandShare = 0.5;
   static constexpr int kMaxRestStride = 1024;
+  // Mid-step rest's sweeps stop when no contact velocity changed by more than this share of
+  // |g|·max_step in one (contact_rows.h).
+  static constexpr double kRestTolerance = 1e-6;
 
   // Throws std::invalid_argument on non-finite gravity, a negative friction gain, steps that
   // are not 0 < min_step <= max_step, non-positive loop bounds, narrow-phase settings out of
@@ -216,6 +226,9 @@ class World {
   // touching depth, unless that crosses another pair. Leaves the manifolds of the state it
   // holds in detected_.
   void push_touching_apart(const std::vector<std::pair<std::size_t, std::size_t>>& pairs);
+  // Before the members move by h (s) from the state whose manifolds are given: their slow
+  // contacts' impulses at mid-step, when settings_.mid_step_rest (mid_step_rest.h).
+  void rest_at_mid_step(const std::vector<ContactManifold>& manifolds, double h);
   // Impulses for the manifolds of an accepted state at `time` (s), and the step statistics.
   void resolve(const std::vector<ContactManifold>& manifolds, double time);
   // Sets first_crossing_ from the first intersecting pair of `manifolds` (an accepted state).
@@ -248,6 +261,8 @@ class World {
   StepProfile profile_;
   double time_ = 0.0;  // s
   int consecutive_fallbacks_ = 0;
+  double rest_step_ = 0.0;          // s, ResolutionSettings::rest_step of the step in hand
+  std::vector<RestedPair> rested_;  // its ResolutionSettings::rested
 };
 
 }  // namespace rugosim
