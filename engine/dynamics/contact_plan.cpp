@@ -21,10 +21,6 @@ double pressing_gravity(const RigidBody& a, const RigidBody& b, const Vec2& grav
 
 }  // namespace
 
-double deep_share(const ResolutionSettings& settings) {
-  return 0.5 * (1.0 + settings.rest_depth);
-}
-
 ContactBodyState contact_state(const RigidBody& body, const Vec2& point) {
   ContactBodyState s;
   s.inverse_mass = body.inverse_mass();
@@ -48,7 +44,7 @@ ContactStatics contact_statics(const RigidBody& body_a, const RigidBody& body_b,
   k.delta = std::clamp(k.band - c.distance, 0.0, k.band);
   k.pressing = pressing_gravity(body_a, body_b, settings.gravity, c.normal);
   k.resolved_speed = settings.resolved_gap_fraction * c.distance / settings.max_step;
-  if (settings.rest_step > 0.0 && k.delta <= deep_share(settings) * k.band) {
+  if (settings.rest_step > 0.0 && k.delta <= deep_share(settings.rest_depth) * k.band) {
     k.resolved_speed = std::max(k.resolved_speed, k.pressing * settings.rest_step);
   }
   return k;

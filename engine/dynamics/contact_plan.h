@@ -43,12 +43,6 @@ struct ContactStatics {
   double pressing = 0.0;        // m/s², g_n
   double resolved_speed = 0.0;  // m/s, approach below which the contact is resolved
 };
-// With mid-step rest (ResolutionSettings::rest_step > 0), the share of its band a contact
-// must reach into before micro-collisions answer its slow approach: halfway from the rest
-// depth to touching, so that a contact resting at the rest depth, give or take what one step
-// of gravity and rounding moves it, is left to the mid-step impulses.
-double deep_share(const ResolutionSettings& settings);
-
 ContactStatics contact_statics(const RigidBody& body_a, const RigidBody& body_b, const Contact& c,
                                const ResolutionSettings& settings);
 

@@ -90,7 +90,7 @@ ResolutionCounts ContactResolver::resolve(std::span<RigidBody> bodies,
     plans[i].statics = contact_statics(bodies[m.body_a], bodies[m.body_b], c, settings);
     const RestedPair* rested = find_rested(settings.rested, m.body_a, m.body_b);
     ContactStatics& k = plans[i].statics;
-    if (rested != nullptr && k.delta <= deep_share(settings) * k.band) {
+    if (rested != nullptr && k.delta <= deep_share(settings.rest_depth) * k.band) {
       k.resolved_speed =
           std::max(k.resolved_speed, k.pressing * settings.rest_step + rested->allowance);
     }

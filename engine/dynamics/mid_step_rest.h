@@ -60,6 +60,14 @@ struct MidStepRestCounts {
   std::vector<RestedPair> rested;  // in the manifolds' (body_a, body_b) order
 };
 
+// With mid-step rest, the share of its band a contact must reach into before micro-collisions
+// answer its slow approach (contact_plan.h): halfway from the rest depth to touching, so that a
+// contact resting at the rest depth, give or take what one step of gravity and rounding moves
+// it, is left to the mid-step impulses.
+inline double deep_share(double rest_depth) {
+  return 0.5 * (1.0 + rest_depth);
+}
+
 // The entry of `rested` (sorted by pair) for the pair (a, b), or null.
 const RestedPair* find_rested(std::span<const RestedPair> rested, std::size_t a, std::size_t b);
 
