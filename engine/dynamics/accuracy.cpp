@@ -36,6 +36,9 @@ const std::vector<AccuracyKnob>& accuracy_knobs() {
        nullptr},
       {"rest_stride", "", "a step near contacts that close gently may last this many max_steps",
        true, 1, false, 1024, nullptr, &Accuracy::rest_stride},
+      {"mid_step_rest", "",
+       "1: slow contacts get their impulses at each step's middle; 0: micro-collisions only", true,
+       0, false, 1, nullptr, &Accuracy::mid_step_rest},
       {"toi_tolerance", "s", "time-of-impact bisection stops at this step", false, 0.0, true, 1.0,
        &Accuracy::toi_tolerance, nullptr},
       {"max_bisections", "", "bisections of one step at most", true, 1, false, 200, nullptr,
@@ -106,6 +109,7 @@ WorldSettings with_accuracy(WorldSettings base, const Accuracy& accuracy) {
   }
   base.max_step = accuracy.max_step;
   base.rest_stride = accuracy.rest_stride;
+  base.mid_step_rest = accuracy.mid_step_rest != 0;
   base.min_step = accuracy.toi_tolerance;
   base.max_bisections = accuracy.max_bisections;
   base.max_resolution_passes = accuracy.contact_passes;

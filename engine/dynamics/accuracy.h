@@ -24,6 +24,12 @@ struct Accuracy {
   // steps multiply creep by their length (docs/accuracy: rest_stride 4 makes piles about 2×
   // cheaper and the incline's creep 3× larger); they wait for the resting-contact model.
   int rest_stride = 1;
+  // 1: slow contacts get their impulses at the start of each step, on the velocities at its
+  // middle (WorldSettings::mid_step_rest, mid_step_rest.h), so a resting body neither creeps
+  // nor slides further than friction lets it, whatever the step; 0: the paper's
+  // micro-collisions alone. 0 in every preset: on piles its Gauss-Seidel solve rarely
+  // converges and costs more than it saves (docs/research/resting-contact.md §8.3).
+  int mid_step_rest = 0;
   // s: a step whose end crosses is bisected back towards the first contact until it is this
   // short (the time-of-impact tolerance; World's min_step).
   double toi_tolerance = 1e-9;

@@ -43,6 +43,8 @@ struct StepStats {
   std::uint64_t rest_contacts = 0;
   std::uint64_t rest_sweeps = 0;
   std::uint64_t rest_unconverged = 0;
+  // Steps whose crossing island went on without its mid-step impulses (World::step).
+  std::uint64_t rest_withdrawn = 0;
   // Awake movable bodies summed over the steps: the work a step's cost grows with (wall time
   // per body-step compares scenes of different sizes).
   std::uint64_t body_steps = 0;

@@ -103,6 +103,10 @@ std::string stats_json(const StepStats& s, double wall_time, const Accuracy* acc
   counter("idle_jumps", s.idle_jumps);
   counter("free_steps", s.free_steps);
   counter("rest_steps", s.rest_steps);
+  counter("rest_contacts", s.rest_contacts);
+  counter("rest_sweeps", s.rest_sweeps);
+  counter("rest_unconverged", s.rest_unconverged);
+  counter("rest_withdrawn", s.rest_withdrawn);
   counter("body_steps", s.body_steps);
   out.append("  \"sim_time\": ");
   append_number(out, s.sim_time);

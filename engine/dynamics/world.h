@@ -96,10 +96,9 @@ struct WorldSettings {
   // every step near contact at max_step.
   int rest_stride = 1;
   // Slow contacts get their impulses at the start of each step, on the mid-step velocities
-  // (mid_step_rest.h), and micro-collisions answer only faster approaches. Not yet a scene key:
-  // exact on the validation scenes, but stacks of boxes placed touching cross under it (stress
-  // seeds 5, 13, 19: a touching pair held from approaching stays touching, and a rounding then
-  // crosses it; docs/research/resting-contact.md §8.3).
+  // (mid_step_rest.h), and micro-collisions answer only faster approaches. An island whose
+  // step crosses goes on without them for that step (World::step; §8.4 of
+  // docs/research/resting-contact.md).
   bool mid_step_rest = false;
   // Share of its band a contact resting at mid-step reaches into it (mid_step_rest.h), in
   // (0, 1).
@@ -221,7 +220,8 @@ class World {
                                  double h) const;
   // Advances the members, whose full move to h (s after time_) was found to cross, by
   // back-off and further sub-steps until they reach h.
-  void advance_crossing_members(double h);
+  // trial_crosses: the move to h was tried from the members' state now and crossed.
+  void advance_crossing_members(double h, bool trial_crosses);
   // Bisects the members' move of dt_full (s) whose end crosses; returns the accepted dt (0 after
   // a min-step fallback), leaves the members there and the manifolds in accepted_.
   double back_off(double dt_full);
@@ -266,6 +266,10 @@ class World {
   int consecutive_fallbacks_ = 0;
   double rest_step_ = 0.0;          // s, ResolutionSettings::rest_step of the step in hand
   std::vector<RestedPair> rested_;  // its ResolutionSettings::rested
+  // Mid-step rest: each member's state before the step's impulses, and whether the crossing
+  // members of this step went on without them (World::step).
+  std::vector<BodyState> before_rest_;
+  bool rest_withdrawn_ = false;
 };
 
 }  // namespace rugosim

@@ -252,6 +252,14 @@ StressScene random_stress_scene(std::uint64_t seed) {
                 {"accuracy", accuracy},
                 {"q", rng.uniform(0.1, 1.0)},
                 {"friction_gain", rng.uniform() < 0.2 ? 0.0 : log_uniform(rng, 0.1, 1e4)}};
+  // Mid-step rest, a knob no preset sets, for a quarter of the scenes, half of those with rest
+  // steps too. Drawn from a stream of its own, so that a seed's other draws stay what they were.
+  Rng knob_rng(derive_seed(seed, 0x3e57));
+  if (knob_rng.uniform() < 0.25) {
+    json knobs = {{"preset", accuracy}, {"mid_step_rest", 1}};
+    if (knob_rng.uniform() < 0.5) knobs["rest_stride"] = 4;
+    world["accuracy"] = knobs;
+  }
   json bodies = json::array();
   if (s.kind == "loose") loose(rng, s, bodies);
   if (s.kind == "stack") stack(rng, s, bodies);

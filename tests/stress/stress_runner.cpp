@@ -104,6 +104,12 @@ Outcome run_scene(const Options& o, const json& scene, const std::string& label,
   out.accuracy = "normal";
   if (const auto a = world.find("accuracy"); a != world.end() && a->is_string()) {
     out.accuracy = a->get_ref<const std::string&>();
+  } else if (a != world.end() && a->is_object()) {
+    // A preset with knobs: "normal+mid_step_rest=1+rest_stride=4" (no commas: a CSV cell).
+    out.accuracy = a->value("preset", std::string("normal"));
+    for (const auto& [key, value] : a->items()) {
+      if (key != "preset") out.accuracy += "+" + key + "=" + value.dump();
+    }
   }
   out.bodies = scene.at("bodies").size();
   const fs::path dir = o.work / label;
