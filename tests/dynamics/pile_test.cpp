@@ -93,8 +93,16 @@ TEST(Pile, IsDeterministic) {
 }
 
 // Threads never change a result: the same pile with 1, 2, 3 and 8 threads of collision detection
-// gives bit-identical states, the same events in the same order, and the same statistics.
-TEST(Pile, ThreadsChangeNothing) {
+// gives bit-identical states, the same events in the same order, and the same statistics; with
+// resting contact by micro-collisions (every preset) and with mid-step rest (the knob).
+class PileThreads : public ::testing::TestWithParam<bool> {};
+
+INSTANTIATE_TEST_SUITE_P(Rest, PileThreads, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& mid_step) {
+                           return mid_step.param ? "MidStepRest" : "MicroCollisions";
+                         });
+
+TEST_P(PileThreads, ChangeNothing) {
   PileSpec spec;
   spec.bodies = 30;
   struct Run {
@@ -105,6 +113,7 @@ TEST(Pile, ThreadsChangeNothing) {
   auto run = [&](int threads) {
     WorldSettings settings;
     settings.threads = threads;
+    settings.mid_step_rest = GetParam();
     World world(settings);
     for (const testing::PileBody& b : testing::pile_scene(spec))
       world.add_body(RigidBody(b.desc), b.name);
@@ -144,7 +153,10 @@ TEST(Pile, ThreadsChangeNothing) {
     EXPECT_EQ(many.stats.contacts, one.stats.contacts);
     EXPECT_EQ(many.stats.passes, one.stats.passes);
     EXPECT_EQ(many.stats.islands_slept, one.stats.islands_slept);
+    EXPECT_EQ(many.stats.rest_sweeps, one.stats.rest_sweeps);
+    EXPECT_EQ(many.stats.rest_withdrawn, one.stats.rest_withdrawn);
   }
+  if (GetParam()) EXPECT_GT(one.stats.rest_contacts, 0u);
 }
 
 }  // namespace
