@@ -7,9 +7,15 @@
 #include "engine/dynamics/collision_impulse.h"
 #include "engine/dynamics/contact_plan.h"
 #include "engine/dynamics/contact_resolution.h"
+#include "engine/dynamics/contact_rows.h"
+#include "engine/dynamics/slow_contacts.h"
 
 namespace rugosim {
 namespace {
+
+// Sweeps of the cluster's slow contacts stop when no contact velocity changes by more than this
+// share of |g|·max_step (World::kRestTolerance's value, for the same closed forms).
+constexpr double kClusterRestTolerance = 1e-6;
 
 // A cluster moving as one rigid body.
 struct Composite {
@@ -104,10 +110,55 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
       const Contact& c = m.contacts[f.contact];
       const RigidBody& a = bodies[m.body_a];
       const RigidBody& b = bodies[m.body_b];
-      return f.cluster_is_a
-                 ? plan_contact(composite.at(c.point), contact_state(b, c.point), a, b, c, settings)
-                 : plan_contact(contact_state(a, c.point), composite.at(c.point), a, b, c,
-                                settings);
+      ContactPlan p =
+          f.cluster_is_a
+              ? plan_contact(composite.at(c.point), contact_state(b, c.point), a, b, c, settings)
+              : plan_contact(contact_state(a, c.point), composite.at(c.point), a, b, c, settings);
+      // Under mid-step rest, slow contacts are stopped together below, not bounced one by one.
+      if (settings.rest_step > 0.0 && p.micro) p.approaching = false;
+      return p;
+    };
+    // Under mid-step rest: the cluster's slow approaches to fixed bodies, all stopped together
+    // and inelastically (slow_contacts.h, allowance 0). A micro-collision's hop, √(2·g_n·δ) back
+    // out of the band, would lift the whole cluster, a settling pile, as one body (the 50-body
+    // pile hopped at 0.22 m/s and slept a second later); one-by-one inelastic stops would leave
+    // it rocking about its last contact. Returns the contacts that got an impulse.
+    const auto stop_slow_contacts = [&](Composite& cluster,
+                                        const std::vector<FixedContact>& candidates) {
+      std::vector<SolverBody> solver(1);
+      solver[0] = {1.0 / cluster.mass, 1.0 / cluster.inertia, cluster.centre, cluster.velocity,
+                   cluster.angular_velocity};
+      std::vector<SlowContact> slow;
+      for (const FixedContact& f : candidates) {
+        const ContactManifold& m = manifolds[f.manifold];
+        const Contact& c = m.contacts[f.contact];
+        const RigidBody& a = bodies[m.body_a];
+        const RigidBody& b = bodies[m.body_b];
+        const ContactPlan p =
+            f.cluster_is_a
+                ? plan_contact(cluster.at(c.point), contact_state(b, c.point), a, b, c, settings)
+                : plan_contact(contact_state(a, c.point), cluster.at(c.point), a, b, c, settings);
+        if (!p.micro || !p.approaching) continue;
+        const RigidBody& held = f.cluster_is_a ? b : a;
+        solver.push_back({0.0, 0.0, held.state().position, held.state().velocity,
+                          held.state().angular_velocity});
+        const std::size_t other = solver.size() - 1;
+        SlowContact s;
+        s.body_a = f.cluster_is_a ? 0 : other;
+        s.body_b = f.cluster_is_a ? other : 0;
+        s.point = c.point;
+        s.normal = c.normal;
+        s.friction = p.mu;
+        slow.push_back(s);
+      }
+      if (slow.empty()) return std::size_t{0};
+      SweepSettings sweeps;
+      sweeps.tolerance = kClusterRestTolerance;
+      sweeps.speed_floor = settings.gravity.norm() * settings.max_step;
+      const SlowContactResult r = solve_slow_contacts(solver, slow, sweeps);
+      cluster.velocity += r.change[0].velocity;
+      cluster.angular_velocity += r.change[0].angular_velocity;
+      return r.pushed;
     };
     for (int pass = 0; pass < settings.max_passes; ++pass) {
       order.clear();
@@ -141,6 +192,8 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
         }
       }
     }
+
+    if (settings.rest_step > 0.0) counts.contacts += stop_slow_contacts(composite, fixed_contacts);
 
     for (const FixedContact& f : fixed_contacts) {
       if (plan(f).approaching) {
