@@ -8,6 +8,7 @@
 #include "engine/dynamics/contact_plan.h"
 #include "engine/dynamics/contact_resolution.h"
 #include "engine/dynamics/contact_rows.h"
+#include "engine/dynamics/mid_step_rest.h"
 #include "engine/dynamics/slow_contacts.h"
 
 namespace rugosim {
@@ -16,6 +17,8 @@ namespace {
 // Sweeps of the cluster's slow contacts stop when no contact velocity changes by more than this
 // share of |g|·max_step (World::kRestTolerance's value, for the same closed forms).
 constexpr double kClusterRestTolerance = 1e-6;
+// Rounds of passes and stops at most (one or two in practice: rigid_cluster_test.cpp).
+constexpr int kStopRounds = 4;
 
 // A cluster moving as one rigid body.
 struct Composite {
@@ -105,41 +108,51 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
         fixed_contacts.push_back({k, c, a_in});
     }
 
-    auto plan = [&](const FixedContact& f) {
+    // A contact of the cluster with a fixed body: its plan, and whether mid-step rest stops it
+    // (a slow approach no deeper than deep_share of its band, as for any contact under mid-step
+    // rest) instead of micro-colliding it. Deeper contacts keep the micro-collision that lifts
+    // them back.
+    struct FixedPlan {
+      ContactPlan plan;
+      bool stopped = false;
+    };
+    const auto plan_fixed = [&](const Composite& cluster, const FixedContact& f) {
       const ContactManifold& m = manifolds[f.manifold];
       const Contact& c = m.contacts[f.contact];
       const RigidBody& a = bodies[m.body_a];
       const RigidBody& b = bodies[m.body_b];
-      ContactPlan p =
-          f.cluster_is_a
-              ? plan_contact(composite.at(c.point), contact_state(b, c.point), a, b, c, settings)
-              : plan_contact(contact_state(a, c.point), composite.at(c.point), a, b, c, settings);
-      // Under mid-step rest, slow contacts are stopped together below, not bounced one by one.
-      if (settings.rest_step > 0.0 && p.micro) p.approaching = false;
-      return p;
+      const ContactStatics k = contact_statics(a, b, c, settings);
+      FixedPlan out;
+      out.plan = f.cluster_is_a
+                     ? plan_contact(cluster.at(c.point), contact_state(b, c.point), k, c)
+                     : plan_contact(contact_state(a, c.point), cluster.at(c.point), k, c);
+      out.stopped = settings.rest_step > 0.0 && out.plan.micro &&
+                    k.delta <= deep_share(settings.rest_depth) * k.band;
+      return out;
+    };
+    // What the passes see: a contact that mid-step rest stops is left to the stop below.
+    const auto plan = [&](const FixedContact& f) {
+      FixedPlan fp = plan_fixed(composite, f);
+      if (fp.stopped) fp.plan.approaching = false;
+      return fp.plan;
     };
     // Under mid-step rest: the cluster's slow approaches to fixed bodies, all stopped together
     // and inelastically (slow_contacts.h, allowance 0). A micro-collision's hop, √(2·g_n·δ) back
     // out of the band, would lift the whole cluster, a settling pile, as one body (the 50-body
     // pile hopped at 0.22 m/s and slept a second later); one-by-one inelastic stops would leave
-    // it rocking about its last contact. Returns the contacts that got an impulse.
-    const auto stop_slow_contacts = [&](Composite& cluster,
-                                        const std::vector<FixedContact>& candidates) {
+    // it rocking about its last contact. Every such contact enters the solve, approaching or not,
+    // so that an impulse at one cannot leave another approaching. Returns the contacts pushed.
+    const auto stop_slow_contacts = [&]() {
       std::vector<SolverBody> solver(1);
-      solver[0] = {1.0 / cluster.mass, 1.0 / cluster.inertia, cluster.centre, cluster.velocity,
-                   cluster.angular_velocity};
+      solver[0] = {1.0 / composite.mass, 1.0 / composite.inertia, composite.centre,
+                   composite.velocity, composite.angular_velocity};
       std::vector<SlowContact> slow;
-      for (const FixedContact& f : candidates) {
+      for (const FixedContact& f : fixed_contacts) {
+        const FixedPlan fp = plan_fixed(composite, f);
+        if (!fp.stopped) continue;
         const ContactManifold& m = manifolds[f.manifold];
         const Contact& c = m.contacts[f.contact];
-        const RigidBody& a = bodies[m.body_a];
-        const RigidBody& b = bodies[m.body_b];
-        const ContactPlan p =
-            f.cluster_is_a
-                ? plan_contact(cluster.at(c.point), contact_state(b, c.point), a, b, c, settings)
-                : plan_contact(contact_state(a, c.point), cluster.at(c.point), a, b, c, settings);
-        if (!p.micro || !p.approaching) continue;
-        const RigidBody& held = f.cluster_is_a ? b : a;
+        const RigidBody& held = bodies[f.cluster_is_a ? m.body_b : m.body_a];
         solver.push_back({0.0, 0.0, held.state().position, held.state().velocity,
                           held.state().angular_velocity});
         const std::size_t other = solver.size() - 1;
@@ -148,7 +161,7 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
         s.body_b = f.cluster_is_a ? other : 0;
         s.point = c.point;
         s.normal = c.normal;
-        s.friction = p.mu;
+        s.friction = fp.plan.mu;
         slow.push_back(s);
       }
       if (slow.empty()) return std::size_t{0};
@@ -156,47 +169,53 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
       sweeps.tolerance = kClusterRestTolerance;
       sweeps.speed_floor = settings.gravity.norm() * settings.max_step;
       const SlowContactResult r = solve_slow_contacts(solver, slow, sweeps);
-      cluster.velocity += r.change[0].velocity;
-      cluster.angular_velocity += r.change[0].angular_velocity;
+      composite.velocity += r.change[0].velocity;
+      composite.angular_velocity += r.change[0].angular_velocity;
       return r.pushed;
     };
-    for (int pass = 0; pass < settings.max_passes; ++pass) {
-      order.clear();
-      for (std::size_t i = 0; i < fixed_contacts.size(); ++i) {
-        const ContactPlan p = plan(fixed_contacts[i]);
-        if (p.approaching) order.push_back({p.vn_target, i});
-      }
-      if (order.empty()) break;
-      ++counts.passes;
-      sort_most_approaching_first(order);
-      for (const PendingContact& candidate : order) {
-        const FixedContact& f = fixed_contacts[candidate.index];
-        const ContactManifold& m = manifolds[f.manifold];
-        const Contact& c = m.contacts[f.contact];
-        const ContactPlan p = plan(f);
-        if (!p.approaching) continue;
-        const ImpulseResult r = collision_impulse(p.a, p.b, c.normal, p.restitution, p.mu);
-        if (!r.collision) continue;
-        // The impulse on the cluster: +J when it is A, −J when it is B.
-        const Vec2 impulse = f.cluster_is_a ? r.impulse : Vec2(-r.impulse);
-        const Vec2 arm = c.point - composite.centre;
-        composite.velocity += impulse / composite.mass;
-        composite.angular_velocity += cross(arm, impulse) / composite.inertia;
-        if (p.micro) {
-          ++counts.contacts;
-        } else {
-          ++counts.collisions;
+    // Under mid-step rest the passes and the stop take turns (an impulse of either can make a
+    // contact of the other approach) until the stop has nothing left to push, a few rounds at most.
+    for (int round = 0; round < kStopRounds; ++round) {
+      for (int pass = 0; pass < settings.max_passes; ++pass) {
+        order.clear();
+        for (std::size_t i = 0; i < fixed_contacts.size(); ++i) {
+          const ContactPlan p = plan(fixed_contacts[i]);
+          if (p.approaching) order.push_back({p.vn_target, i});
         }
-        if (events != nullptr) {
-          events->push_back(make_event(bodies[m.body_a], bodies[m.body_b], m, c, p, r, time));
+        if (order.empty()) break;
+        ++counts.passes;
+        sort_most_approaching_first(order);
+        for (const PendingContact& candidate : order) {
+          const FixedContact& f = fixed_contacts[candidate.index];
+          const ContactManifold& m = manifolds[f.manifold];
+          const Contact& c = m.contacts[f.contact];
+          const ContactPlan p = plan(f);
+          if (!p.approaching) continue;
+          const ImpulseResult r = collision_impulse(p.a, p.b, c.normal, p.restitution, p.mu);
+          if (!r.collision) continue;
+          // The impulse on the cluster: +J when it is A, −J when it is B.
+          const Vec2 impulse = f.cluster_is_a ? r.impulse : Vec2(-r.impulse);
+          const Vec2 arm = c.point - composite.centre;
+          composite.velocity += impulse / composite.mass;
+          composite.angular_velocity += cross(arm, impulse) / composite.inertia;
+          if (p.micro) {
+            ++counts.contacts;
+          } else {
+            ++counts.collisions;
+          }
+          if (events != nullptr) {
+            events->push_back(make_event(bodies[m.body_a], bodies[m.body_b], m, c, p, r, time));
+          }
         }
       }
+      if (settings.rest_step <= 0.0) break;
+      const std::size_t pushed = stop_slow_contacts();
+      counts.contacts += pushed;
+      if (pushed == 0) break;
     }
 
-    if (settings.rest_step > 0.0) counts.contacts += stop_slow_contacts(composite, fixed_contacts);
-
     for (const FixedContact& f : fixed_contacts) {
-      if (plan(f).approaching) {
+      if (plan_fixed(composite, f).plan.approaching) {
         counts.still_approaching = true;
         break;
       }

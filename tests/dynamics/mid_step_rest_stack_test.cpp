@@ -3,6 +3,8 @@
 // down a few hundredths per sweep, so after 64 sweeps a light crate's contacts still close faster
 // than their gaps allow; before World::step withdrew the impulses of a crossing island, such
 // stacks (stress seeds 1, 5, 13, 19, 25 with the knob) accepted a crossing at nearly every step.
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "engine/dynamics/world.h"
@@ -53,8 +55,14 @@ TEST_P(MidStepRestStack, HeavyCrateOnLightOnesNeverCrosses) {
       EXPECT_NE(testing::pair_state(world, a, b), PairState::kIntersecting) << a << ", " << b;
     }
   }
-  // The stack stands: the heavy crate is still on top, not sunk into the light ones.
-  EXPECT_GT(world.body(3).state().position.y(), 3.16);
+  // Held by the contact model, not by the back-off's last resorts (stopping or holding bodies).
+  EXPECT_EQ(stats.stalled_steps, 0u);
+  EXPECT_EQ(stats.min_step_fallbacks, 0u);
+  RecordProperty("rest_withdrawn", std::to_string(stats.rest_withdrawn));
+  RecordProperty("rest_unconverged", std::to_string(stats.rest_unconverged));
+  // The stack stands: the heavy crate's centre, 3.55 m up at the start, sinks by no more than
+  // the crates' bands (a few micrometres each) and rounding.
+  EXPECT_NEAR(world.body(3).state().position.y(), 3.16 + 0.39, 1e-4);
 }
 
 }  // namespace

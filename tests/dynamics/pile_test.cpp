@@ -153,8 +153,12 @@ TEST_P(PileThreads, ChangeNothing) {
     EXPECT_EQ(many.stats.contacts, one.stats.contacts);
     EXPECT_EQ(many.stats.passes, one.stats.passes);
     EXPECT_EQ(many.stats.islands_slept, one.stats.islands_slept);
+    EXPECT_EQ(many.stats.rest_contacts, one.stats.rest_contacts);
     EXPECT_EQ(many.stats.rest_sweeps, one.stats.rest_sweeps);
+    EXPECT_EQ(many.stats.rest_unconverged, one.stats.rest_unconverged);
     EXPECT_EQ(many.stats.rest_withdrawn, one.stats.rest_withdrawn);
+    EXPECT_EQ(many.stats.rigid_clusters, one.stats.rigid_clusters);
+    EXPECT_EQ(many.stats.crossings, one.stats.crossings);
   }
   if (GetParam()) EXPECT_GT(one.stats.rest_contacts, 0u);
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -142,34 +143,42 @@ TEST(RigidCluster, ResolvesContactsWithFixedBodiesAsOneBody) {
 }
 
 // Under mid-step rest (ResolutionSettings::rest_step > 0) a cluster's slow contacts with fixed
-// bodies are stopped inelastically: a cluster is a settling pile for an instant, and a
-// micro-collision's hop, √(2·g_n·δ) back out of the band, would lift the whole pile as one body
-// (the 50-body pile hopped at 0.22 m/s and slept a second later). Micro-collisions alone keep it.
+// bodies that are no deeper than deep_share of their band are stopped together, inelastically:
+// a cluster is a settling pile for an instant, and a micro-collision's hop, √(2·g_n·δ) back out
+// of the band, would lift the whole pile as one body (the 50-body pile hopped at 0.22 m/s and
+// slept a second later). Deeper contacts keep the hop that lifts them back, as micro-collisions
+// alone do for every contact.
 TEST(RigidCluster, UnderMidStepRestAClusterStopsOnTheFloorWithoutAHop) {
   const Material m = make_material(0.5, 0.5);
-  for (const bool mid_step : {false, true}) {
-    std::vector<RigidBody> bodies;
-    bodies.push_back(floor_block(4.0, 0.3, 0.0, m, 2e-3));
-    // Three disks 1 mm above the floor and 1 mm apart (bands of 3.6 mm), closing on each other
-    // and settling at 5 cm/s: the cluster's floor contacts are micro-collisions.
-    for (int i = 0; i < 3; ++i) {
-      const Vec2 velocity(0.05 * (1 - i), -0.05);
-      bodies.push_back(disk(0.2, 48, Vec2(-0.401 + 0.401 * i, 0.201), velocity, m, 2e-3));
-    }
-    ResolutionSettings settings;
-    settings.rest_step = mid_step ? 1e-3 : 0.0;
-    const ClusterCounts counts =
-        resolve_rigid_clusters(bodies, detect(bodies), settings, 0.0, nullptr);
-    ASSERT_EQ(counts.clusters, 1u);
-    EXPECT_FALSE(counts.still_approaching);
-    EXPECT_GT(counts.contacts, 0u);  // the floor contacts were micro-collisions, not collisions
-    for (std::size_t i = 1; i < bodies.size(); ++i) {
-      const double vy = bodies[i].state().velocity.y();
-      RecordProperty((mid_step ? "vy_mid_step_" : "vy_micro_") + std::to_string(i), scientific(vy));
-      if (mid_step) {
-        EXPECT_LE(std::abs(vy), 1e-6) << i;  // stopped: neither approaching nor lifted
-      } else {
-        EXPECT_GT(vy, 0.05) << i;  // the hop
+  // Gap to the floor: 2 mm (δ = 0.44 of the 3.6 mm band: shallow) or 1 mm (0.72: deep).
+  for (const double gap : {2e-3, 1e-3}) {
+    for (const bool mid_step : {false, true}) {
+      std::vector<RigidBody> bodies;
+      bodies.push_back(floor_block(4.0, 0.3, 0.0, m, 2e-3));
+      // Three disks 1 mm apart, closing on each other and settling at 5 cm/s: the cluster's
+      // floor contacts are slow (micro-collisions without mid-step rest).
+      for (int i = 0; i < 3; ++i) {
+        const Vec2 velocity(0.05 * (1 - i), -0.05);
+        bodies.push_back(disk(0.2, 48, Vec2(-0.401 + 0.401 * i, 0.2 + gap), velocity, m, 2e-3));
+      }
+      ResolutionSettings settings;
+      settings.rest_step = mid_step ? 1e-3 : 0.0;
+      const ClusterCounts counts =
+          resolve_rigid_clusters(bodies, detect(bodies), settings, 0.0, nullptr);
+      ASSERT_EQ(counts.clusters, 1u);
+      EXPECT_FALSE(counts.still_approaching);
+      EXPECT_GT(counts.contacts, 0u);  // the floor contacts were slow ones, not collisions
+      const bool stopped = mid_step && gap == 2e-3;
+      for (std::size_t i = 1; i < bodies.size(); ++i) {
+        const double vy = bodies[i].state().velocity.y();
+        RecordProperty(std::string(gap == 2e-3 ? "vy_gap_2mm_" : "vy_gap_1mm_") +
+                           (mid_step ? "mid_" : "micro_") + std::to_string(i),
+                       scientific(vy));
+        if (stopped) {
+          EXPECT_LE(std::abs(vy), 1e-6) << i;  // neither approaching nor lifted
+        } else {
+          EXPECT_GT(vy, 0.05) << gap << " " << mid_step << " " << i;  // the hop
+        }
       }
     }
   }
