@@ -160,7 +160,9 @@ TEST_P(PileThreads, ChangeNothing) {
     EXPECT_EQ(many.stats.rigid_clusters, one.stats.rigid_clusters);
     EXPECT_EQ(many.stats.crossings, one.stats.crossings);
   }
-  if (GetParam()) EXPECT_GT(one.stats.rest_contacts, 0u);
+  if (GetParam()) {
+    EXPECT_GT(one.stats.rest_contacts, 0u);
+  }
 }
 
 }  // namespace
