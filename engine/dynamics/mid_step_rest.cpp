@@ -9,6 +9,13 @@
 
 namespace rugosim {
 
+SweepSettings rest_sweeps(const Vec2& gravity, double max_step) {
+  SweepSettings sweeps;
+  sweeps.tolerance = 1e-6;
+  sweeps.speed_floor = gravity.norm() * max_step;
+  return sweeps;
+}
+
 const RestedPair* find_rested(std::span<const RestedPair> rested, std::size_t a, std::size_t b) {
   const auto it =
       std::lower_bound(rested.begin(), rested.end(), std::make_pair(a, b),

@@ -14,9 +14,6 @@
 namespace rugosim {
 namespace {
 
-// Sweeps of the cluster's slow contacts stop when no contact velocity changes by more than this
-// share of |g|·max_step (World::kRestTolerance's value, for the same closed forms).
-constexpr double kClusterRestTolerance = 1e-6;
 // Rounds of passes and stops at most (one or two in practice: rigid_cluster_test.cpp).
 constexpr int kStopRounds = 4;
 
@@ -165,10 +162,8 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
         slow.push_back(s);
       }
       if (slow.empty()) return std::size_t{0};
-      SweepSettings sweeps;
-      sweeps.tolerance = kClusterRestTolerance;
-      sweeps.speed_floor = settings.gravity.norm() * settings.max_step;
-      const SlowContactResult r = solve_slow_contacts(solver, slow, sweeps);
+      const SlowContactResult r =
+          solve_slow_contacts(solver, slow, rest_sweeps(settings.gravity, settings.max_step));
       composite.velocity += r.change[0].velocity;
       composite.angular_velocity += r.change[0].angular_velocity;
       return r.pushed;

@@ -363,9 +363,8 @@ void World::rest_at_mid_step(const std::vector<ContactManifold>& manifolds, doub
   rest_step_ = 0.0;
   rested_.clear();
   if (!settings_.mid_step_rest || rest_withdrawn_) return;
-  MidStepRestSettings rest{settings_.gravity, settings_.friction_gain, settings_.rest_depth, {}};
-  rest.sweeps.tolerance = kRestTolerance;
-  rest.sweeps.speed_floor = settings_.gravity.norm() * settings_.max_step;
+  const MidStepRestSettings rest{settings_.gravity, settings_.friction_gain, settings_.rest_depth,
+                                 rest_sweeps(settings_.gravity, settings_.max_step)};
   MidStepRestCounts counts = rugosim::rest_at_mid_step(bodies_, moving_, manifolds, h, rest);
   rest_step_ = h;
   rested_ = std::move(counts.rested);

@@ -144,9 +144,6 @@ class World {
   // band as a fall of max_step at v = band / max_step would bring it (3 mm at 1 ms is 3 m/s).
   static constexpr double kRestBandShare = 0.5;
   static constexpr int kMaxRestStride = 1024;
-  // Mid-step rest's sweeps stop when no contact velocity changed by more than this share of
-  // |g|·max_step in one (contact_rows.h).
-  static constexpr double kRestTolerance = 1e-6;
 
   // Throws std::invalid_argument on non-finite gravity, a negative friction gain, steps that
   // are not 0 < min_step <= max_step, non-positive loop bounds, narrow-phase settings out of
