@@ -39,6 +39,8 @@ const std::vector<AccuracyKnob>& accuracy_knobs() {
       {"mid_step_rest", "",
        "1: slow contacts get their impulses at each step's middle; 0: micro-collisions only", true,
        0, false, 1, nullptr, &Accuracy::mid_step_rest},
+      {"rest_sweeps", "", "Gauss-Seidel sweeps of each mid-step solve at most", true, 1, false,
+       100000, nullptr, &Accuracy::rest_sweeps},
       {"toi_tolerance", "s", "time-of-impact bisection stops at this step", false, 0.0, true, 1.0,
        &Accuracy::toi_tolerance, nullptr},
       {"max_bisections", "", "bisections of one step at most", true, 1, false, 200, nullptr,
@@ -70,11 +72,17 @@ const std::vector<std::string>& accuracy_preset_names() {
 }
 
 // The values come from bench/accuracy_study.cpp (docs/accuracy/): what each knob buys, and what
-// it costs, on the validation and figure scenes.
+// it costs, on the validation and figure scenes. Every preset rests contacts at mid-step
+// (docs/research/resting-contact.md §8.7). draft steps 2 ms: at 4 ms figure12a's rocks kept
+// rocking at a few cm/s and never slept, which cost more than the shorter step. precise takes
+// no rest steps and a resolved-contact threshold of 1e-5: at 1e-3 (a share of the gap closed
+// per step, so a threshold that tightens as the step grows) its figure06_type3_type4 ended
+// 3.4 mm from the reference, at 1e-5 0.04 mm.
 std::optional<Accuracy> accuracy_preset(std::string_view name) {
   if (name == "normal") return Accuracy{};
   if (name == "draft") {
-    return Accuracy{.max_step = 4e-3,
+    return Accuracy{.max_step = 2e-3,
+                    .rest_sweeps = 16,
                     .toi_tolerance = 1e-7,
                     .max_bisections = 30,
                     .newton_tolerance = 1e-9,
@@ -84,12 +92,14 @@ std::optional<Accuracy> accuracy_preset(std::string_view name) {
   }
   if (name == "precise") {
     return Accuracy{.max_step = 2.5e-4,
+                    .rest_stride = 1,
                     .toi_tolerance = 1e-10,
                     .max_bisections = 80,
                     .newton_tolerance = 1e-13,
                     .newton_iterations = 60,
                     .seed_depth = 52,
-                    .contact_passes = 128};
+                    .contact_passes = 128,
+                    .contact_threshold = 1e-5};
   }
   return std::nullopt;
 }
@@ -110,6 +120,7 @@ WorldSettings with_accuracy(WorldSettings base, const Accuracy& accuracy) {
   base.max_step = accuracy.max_step;
   base.rest_stride = accuracy.rest_stride;
   base.mid_step_rest = accuracy.mid_step_rest != 0;
+  base.rest_sweeps = accuracy.rest_sweeps;
   base.min_step = accuracy.toi_tolerance;
   base.max_bisections = accuracy.max_bisections;
   base.max_resolution_passes = accuracy.contact_passes;

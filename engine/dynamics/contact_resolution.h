@@ -65,6 +65,9 @@ struct ResolutionSettings {
   // that is not left to the mid-step impulses, whose allowance only stops its approach; it gets
   // its micro-collision, which lifts it back.
   double rest_depth = MidStepRestSettings{}.rest_depth;
+  // Sweeps of a mid-step solve at most (WorldSettings::rest_sweeps): a rigid cluster's stop is
+  // one.
+  int rest_sweeps = 64;
 };
 
 struct ResolutionCounts {

@@ -9,8 +9,9 @@
 
 namespace rugosim {
 
-SweepSettings rest_sweeps(const Vec2& gravity, double max_step) {
+SweepSettings rest_sweep_settings(const Vec2& gravity, double max_step, int max_sweeps) {
   SweepSettings sweeps;
+  sweeps.max_sweeps = max_sweeps;
   sweeps.tolerance = 1e-6;
   sweeps.speed_floor = gravity.norm() * max_step;
   return sweeps;

@@ -68,10 +68,11 @@ inline double deep_share(double rest_depth) {
   return 0.5 * (1.0 + rest_depth);
 }
 
-// The sweeps of a mid-step solve, for a World of the given gravity (m/s²) and max_step (s):
-// converged when no contact velocity changes by more than 1e-6 of |g|·max_step in a sweep (a
-// looser 1e-3 let the incline creep at 3e-7 m/s: docs/research/resting-contact.md §8.3).
-SweepSettings rest_sweeps(const Vec2& gravity, double max_step);
+// The sweeps of a mid-step solve, for a World of the given gravity (m/s²) and max_step (s),
+// `max_sweeps` at most (the `rest_sweeps` accuracy knob): converged when no contact velocity
+// changes by more than 1e-6 of |g|·max_step in a sweep (a looser 1e-3 let the incline creep at
+// 3e-7 m/s: docs/research/resting-contact.md §8.3).
+SweepSettings rest_sweep_settings(const Vec2& gravity, double max_step, int max_sweeps);
 
 // The entry of `rested` (sorted by pair) for the pair (a, b), or null.
 const RestedPair* find_rested(std::span<const RestedPair> rested, std::size_t a, std::size_t b);

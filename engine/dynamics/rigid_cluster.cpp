@@ -162,8 +162,9 @@ ClusterCounts resolve_rigid_clusters(std::span<RigidBody> bodies,
         slow.push_back(s);
       }
       if (slow.empty()) return std::size_t{0};
-      const SlowContactResult r =
-          solve_slow_contacts(solver, slow, rest_sweeps(settings.gravity, settings.max_step));
+      const SlowContactResult r = solve_slow_contacts(
+          solver, slow,
+          rest_sweep_settings(settings.gravity, settings.max_step, settings.rest_sweeps));
       composite.velocity += r.change[0].velocity;
       composite.angular_velocity += r.change[0].angular_velocity;
       return r.pushed;

@@ -68,8 +68,10 @@ World::World(WorldSettings settings)
   if (!(settings_.rest_depth > 0.0 && settings_.rest_depth < 1.0)) {
     throw std::invalid_argument("rest_depth must be in (0, 1)");
   }
-  if (settings_.max_bisections <= 0 || settings_.max_resolution_passes <= 0) {
-    throw std::invalid_argument("max_bisections and max_resolution_passes must be > 0");
+  if (settings_.max_bisections <= 0 || settings_.max_resolution_passes <= 0 ||
+      settings_.rest_sweeps <= 0) {
+    throw std::invalid_argument(
+        "max_bisections, max_resolution_passes and rest_sweeps must be > 0");
   }
   if (!(settings_.resolved_gap_fraction >= 0.0 && settings_.resolved_gap_fraction < 1.0)) {
     throw std::invalid_argument("resolved_gap_fraction must be in [0, 1)");
@@ -302,7 +304,8 @@ void World::resolve(const std::vector<ContactManifold>& manifolds, double time) 
                                       settings_.resolved_gap_fraction,
                                       rest_step_,
                                       rested_,
-                                      settings_.rest_depth};
+                                      settings_.rest_depth,
+                                      settings_.rest_sweeps};
   ++stats_.steps;
   if (any_crossing(manifolds)) {
     ++stats_.crossings;
@@ -363,8 +366,9 @@ void World::rest_at_mid_step(const std::vector<ContactManifold>& manifolds, doub
   rest_step_ = 0.0;
   rested_.clear();
   if (!settings_.mid_step_rest || rest_withdrawn_) return;
-  const MidStepRestSettings rest{settings_.gravity, settings_.friction_gain, settings_.rest_depth,
-                                 rest_sweeps(settings_.gravity, settings_.max_step)};
+  const MidStepRestSettings rest{
+      settings_.gravity, settings_.friction_gain, settings_.rest_depth,
+      rest_sweep_settings(settings_.gravity, settings_.max_step, settings_.rest_sweeps)};
   MidStepRestCounts counts = rugosim::rest_at_mid_step(bodies_, moving_, manifolds, h, rest);
   rest_step_ = h;
   rested_ = std::move(counts.rested);

@@ -94,15 +94,18 @@ struct WorldSettings {
   // at most kRestBandShare of its narrowest bands may last up to this many max_steps (a rest
   // step): resting and slowly rolling bodies are looked at less often than impacts. 1 keeps
   // every step near contact at max_step.
-  int rest_stride = 1;
+  int rest_stride = 16;
   // Slow contacts get their impulses at the start of each step, on the mid-step velocities
   // (mid_step_rest.h), and micro-collisions answer only faster approaches. An island whose
   // step crosses goes on without them for that step (World::step; §8.4 of
   // docs/research/resting-contact.md).
-  bool mid_step_rest = false;
+  bool mid_step_rest = true;
   // Share of its band a contact resting at mid-step reaches into it (mid_step_rest.h), in
   // (0, 1).
   double rest_depth = MidStepRestSettings{}.rest_depth;
+  // Gauss-Seidel sweeps of a mid-step solve at most. A pile's solve often runs out of them
+  // (counted in StepStats::rest_unconverged): what is left is answered by micro-collisions.
+  int rest_sweeps = 64;
   // s: bisection stops below this step. 1e-9 s at 10 m/s is 10 nm, below the minimum band
   // (1e-6 of a 1 m body), so a contact is normally caught before the bound is reached.
   double min_step = 1e-9;

@@ -48,7 +48,7 @@ TEST_F(AccuracyOptions, PresetAndKnobsReachTheRun) {
   EXPECT_EQ(accuracy().at("max_step"), 0.001);  // the scene's preset: normal
   EXPECT_EQ(accuracy().at("seed_depth"), 48);
   ASSERT_EQ(simulate("--accuracy draft"), 0);
-  EXPECT_EQ(accuracy().at("max_step"), 0.004);
+  EXPECT_EQ(accuracy().at("max_step"), 0.002);
   EXPECT_EQ(accuracy().at("contact_passes"), 32);
   ASSERT_EQ(simulate("--accuracy precise --max-step 0.0005 --seed-depth 20 --contact-threshold 0"),
             0);

@@ -19,6 +19,9 @@ TEST(Accuracy, NormalIsTheWorldsDefaults) {
   const WorldSettings normal = with_accuracy(WorldSettings{}, *accuracy_preset("normal"));
   EXPECT_EQ(*accuracy_preset("normal"), Accuracy{});
   EXPECT_EQ(normal.max_step, defaults.max_step);
+  EXPECT_EQ(normal.rest_stride, defaults.rest_stride);
+  EXPECT_EQ(normal.mid_step_rest, defaults.mid_step_rest);
+  EXPECT_EQ(normal.rest_sweeps, defaults.rest_sweeps);
   EXPECT_EQ(normal.min_step, defaults.min_step);
   EXPECT_EQ(normal.max_bisections, defaults.max_bisections);
   EXPECT_EQ(normal.max_resolution_passes, defaults.max_resolution_passes);
@@ -29,13 +32,14 @@ TEST(Accuracy, NormalIsTheWorldsDefaults) {
   EXPECT_EQ(normal.narrow_phase.max_cells, defaults.narrow_phase.max_cells);
 }
 
-// "Finer" for each knob: a shorter step and tolerances, more iterations, depth and passes.
+// "Finer" for each knob: a shorter step, shorter rest steps and tolerances, more iterations,
+// depth and passes.
 TEST(Accuracy, PresetsAreOrderedOnEveryKnob) {
   const Accuracy draft = *accuracy_preset("draft");
   const Accuracy normal = *accuracy_preset("normal");
   const Accuracy precise = *accuracy_preset("precise");
-  const std::set<std::string> smaller_is_finer = {"max_step", "toi_tolerance", "newton_tolerance",
-                                                  "contact_threshold"};
+  const std::set<std::string> smaller_is_finer = {"max_step", "rest_stride", "toi_tolerance",
+                                                  "newton_tolerance", "contact_threshold"};
   for (const AccuracyKnob& knob : accuracy_knobs()) {
     const double d = knob.get(draft), n = knob.get(normal), p = knob.get(precise);
     if (smaller_is_finer.count(std::string(knob.key)) != 0) {

@@ -171,7 +171,11 @@ TEST(Extremes, MassRatiosUpToAMillion) {
       const Watch w = run(world, 1.5);
       const double weight = 9.81 * (world.body(1).mass() + world.body(2).mass());
       expect_sound(w, 20.0 * weight * 0.002, 20000);
-      EXPECT_LT(world.body(2).state().velocity.norm(), 0.05)
+      // A body resting at mid-step ends a step of length h with the half step of gravity that
+      // the next step's impulses take away: g·h/2, up to 78 mm/s for a 16 ms rest step.
+      const WorldSettings& s = world.settings();
+      const double half_step_of_gravity = 0.5 * 9.81 * s.rest_stride * s.max_step;
+      EXPECT_LT(world.body(2).state().velocity.norm(), 0.05 + half_step_of_gravity)
           << "ratio " << ratio << (heavy_on_top ? ", heavy on top" : ", light on top");
       RecordProperty(std::string("stack_top_speed_") + (heavy_on_top ? "heavy_" : "light_") +
                          scientific(ratio, 0),

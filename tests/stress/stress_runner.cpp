@@ -105,7 +105,7 @@ Outcome run_scene(const Options& o, const json& scene, const std::string& label,
   if (const auto a = world.find("accuracy"); a != world.end() && a->is_string()) {
     out.accuracy = a->get_ref<const std::string&>();
   } else if (a != world.end() && a->is_object()) {
-    // A preset with knobs: "normal+mid_step_rest=1+rest_stride=4" (no commas: a CSV cell).
+    // A preset with knobs: "normal+mid_step_rest=0+rest_stride=1" (no commas: a CSV cell).
     out.accuracy = a->value("preset", std::string("normal"));
     for (const auto& [key, value] : a->items()) {
       if (key != "preset") out.accuracy += "+" + key + "=" + value.dump();
