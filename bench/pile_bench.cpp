@@ -13,13 +13,15 @@
 // bodies of 0.1 to 10 m). Every rugosim contact here has μ = k·λ = 100/m · 2.7 mm = 0.27
 // (λ_min = 0), which Box2D gets on every fixture, with the same ε = 0.3 and densities.
 //
-// pile/normal_rest_stride_4_* is normal with rest steps (WorldSettings::rest_stride 4), off in
-// the presets: what they would save; pile/normal_mid_step_rest_stride_16_* adds mid-step rest
-// (the knob mid_step_rest, also off in the presets), under which rest steps cost no accuracy.
+// pile/normal_micro_collisions_* is normal as it was before the presets rested contacts at
+// mid-step (mid_step_rest 0, rest_stride 1: resting contact by the paper's micro-collisions
+// alone): what mid-step rest and the rest steps it allows save.
 //
 // Counters: wall_per_sim_s; ns_per_body_step, the wall time per awake body and step (how cost
 // grows with the work); detection_s, the collision detection's share (World::profile); asleep_at,
-// when every body slept (−1: not within 5 s); and the step statistics.
+// when every body slept (−1: not within 5 s); creep_bands, the largest net displacement of a
+// body over its last second awake, resting, in its contact bands (tests/support/rest_creep.h),
+// with resting, how many bodies rested through that second; and the step statistics.
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -33,6 +35,7 @@
 #include "engine/dynamics/world.h"
 #include "ratio_reporter.h"
 #include "support/pile_scene.h"
+#include "support/rest_creep.h"
 
 namespace rugosim {
 namespace {
@@ -57,8 +60,8 @@ struct RugosimRun {
   std::string preset;
   int threads = 1;
   bool sleeping = true;
-  int rest_stride = 0;  // 0: the preset's
-  bool mid_step_rest = false;
+  int rest_stride = 0;     // 0: the preset's
+  int mid_step_rest = -1;  // -1: the preset's
 };
 
 void pile_rugosim(benchmark::State& state, const RugosimRun& run) {
@@ -66,15 +69,17 @@ void pile_rugosim(benchmark::State& state, const RugosimRun& run) {
   WorldSettings settings = with_accuracy(WorldSettings{}, *accuracy_preset(run.preset));
   settings.sleep.enabled = run.sleeping;
   if (run.rest_stride > 0) settings.rest_stride = run.rest_stride;
-  settings.mid_step_rest = settings.mid_step_rest || run.mid_step_rest;
+  if (run.mid_step_rest >= 0) settings.mid_step_rest = run.mid_step_rest != 0;
   settings.record_events = false;
   settings.threads = run.threads;
   StepStats stats;
   StepProfile profile;
   double asleep_at = -1.0;
   std::size_t awake = 0;
+  testing::RestCreep creep;
   for (auto _ : state) {
     state.PauseTiming();
+    testing::RestCreepTracker creep_tracker(static_cast<int>(1.0 / kFrame + 0.5));
     World world(settings);
     for (const testing::PileBody& b : scene)
       world.add_body(RigidBody(b.desc), b.name);
@@ -90,8 +95,12 @@ void pile_rugosim(benchmark::State& state, const RugosimRun& run) {
           all = world.body(i).fixed() || world.asleep(i);
         if (all) asleep_at = world.time();
       }
+      state.PauseTiming();
+      creep_tracker.record(world);
+      state.ResumeTiming();
     }
     state.PauseTiming();
+    creep = creep_tracker.result();
     stats = world.stats();
     profile = world.profile();
     awake = 0;
@@ -112,6 +121,10 @@ void pile_rugosim(benchmark::State& state, const RugosimRun& run) {
   state.counters["contacts"] = static_cast<double>(stats.contacts);
   state.counters["fallbacks"] = static_cast<double>(stats.fallbacks);
   state.counters["crossings"] = static_cast<double>(stats.crossings);
+  // Resting bodies' net displacement over their last second awake, in contact bands (issue 14:
+  // at most 1), and how many rested through it.
+  state.counters["creep_bands"] = creep.worst_ratio;
+  state.counters["resting"] = static_cast<double>(creep.resting);
 }
 
 void pile_box2d(benchmark::State& state, int samples_per_segment) {
@@ -169,20 +182,15 @@ void register_all() {
             n, repetitions, [run](benchmark::State& s) { pile_rugosim(s, run); });
       }
     }
-    // What rest steps save (WorldSettings::rest_stride; off in the presets, since they let a
-    // body resting on a slope creep more): normal with steps near resting contact up to 4 ms.
+    // What mid-step rest and its rest steps save: normal with resting contact by
+    // micro-collisions alone and every step near contact at max_step, as before.
     if (n <= 200) {
       for (const int threads : {1, cpus}) {
         const std::string suffix =
             std::to_string(threads) + (threads == 1 ? "_thread" : "_threads");
-        const RugosimRun run{"normal", threads, true, 4};
-        add("pile/normal_rest_stride_4_" + suffix, n, repetitions,
+        const RugosimRun run{"normal", threads, true, 1, 0};
+        add("pile/normal_micro_collisions_" + suffix, n, repetitions,
             [run](benchmark::State& s) { pile_rugosim(s, run); });
-        // With mid-step rest, which takes the creep away at any step (accuracy study: validation
-        // error 1.1e-5 at rest_stride 16 against 2.5e-4 at normal).
-        const RugosimRun rest{"normal", threads, true, 16, true};
-        add("pile/normal_mid_step_rest_stride_16_" + suffix, n, repetitions,
-            [rest](benchmark::State& s) { pile_rugosim(s, rest); });
         if (cpus == 1) break;
       }
     }
