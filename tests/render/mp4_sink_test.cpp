@@ -1,6 +1,7 @@
 // The MP4 sink (mp4_sink.h), checked by decoding what it wrote with libavcodec
 // (support/video_probe.h): frame count, duration, size and codec; the BT.709 colour round trip;
-// a SIGKILLed render still playable; I/O errors and bad options reported with the path.
+// a SIGKILLed render still playable, and so is the file cut at any byte; I/O errors and bad options
+// reported with the path.
 #include "render/sinks/mp4_sink.h"
 
 #include <algorithm>
@@ -242,6 +243,90 @@ TEST_F(Mp4SinkTest, KilledRenderLeavesEveryCompletedFragment) {
   EXPECT_GE(probe.frames, std::size_t{kFrames - kKeyframeInterval});
   EXPECT_LE(probe.frames, std::size_t{kFrames});
   RecordProperty("frames_after_sigkill", static_cast<int>(probe.frames));
+}
+
+// What a kill in the middle of a write leaves: the file cut at any byte after its first
+// fragment. Every fragment wholly before the cut must decode; the fragment the cut falls in
+// may give some of its samples, never a decoding error. A cut inside the first fragment
+// leaves nothing to play and is not tried; one inside the moof box of one of the next few
+// fragments (a few hundred bytes each) may leave a file libavformat refuses to open, as it
+// reads those boxes while opening (ffprobe refuses it too). (The kill test above stops the
+// writer between fragments; a real kill can land inside one, since a fragment takes several
+// write calls.)
+TEST_F(Mp4SinkTest, AFileCutAtAnyByteKeepsEveryFragmentBeforeTheCut) {
+  constexpr int kFrames = 60;
+  constexpr int kKeyframeInterval = 10;
+  const std::string path = file("whole.mp4");
+  {
+    Mp4Sink sink(
+        path, 160, 120,
+        Mp4Options{.preset = "ultrafast", .keyframe_interval = kKeyframeInterval, .threads = 1});
+    for (int i = 0; i < kFrames; ++i) {
+      sink.write(moving_square(160, 120, i), static_cast<std::size_t>(i));
+    }
+    sink.close();
+  }
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    bytes = text.str();
+  }
+  // Where each fragment's boxes start (a box's type follows its 4-byte size).
+  auto boxes = [&](const char* type) {
+    std::vector<std::size_t> starts;
+    for (std::size_t at = bytes.find(type); at != std::string::npos;
+         at = bytes.find(type, at + 4)) {
+      starts.push_back(at - 4);
+    }
+    return starts;
+  };
+  const std::vector<std::size_t> moofs = boxes("moof");
+  const std::vector<std::size_t> mdats = boxes("mdat");
+  ASSERT_EQ(moofs.size(), std::size_t{kFrames / kKeyframeInterval});
+  ASSERT_EQ(mdats.size(), moofs.size());
+
+  // Cuts spread through the file from the second fragment on, plus one at each box's start.
+  std::vector<std::size_t> cuts;
+  constexpr std::size_t kCuts = 90;
+  for (std::size_t i = 0; i <= kCuts; ++i) {
+    cuts.push_back(moofs[1] + (bytes.size() - moofs[1]) * i / kCuts);
+  }
+  cuts.insert(cuts.end(), moofs.begin() + 1, moofs.end());
+  cuts.insert(cuts.end(), mdats.begin() + 1, mdats.end());
+  std::sort(cuts.begin(), cuts.end());
+
+  const std::string cut_path = file("cut.mp4");
+  std::size_t previous_frames = 0;
+  for (const std::size_t cut : cuts) {
+    {
+      std::ofstream out(cut_path, std::ios::binary | std::ios::trunc);
+      out.write(bytes.data(), static_cast<std::streamsize>(cut));
+    }
+    const auto whole_fragments = static_cast<std::size_t>(
+        std::count_if(moofs.begin() + 1, moofs.end(), [&](std::size_t m) { return m <= cut; }));
+    bool inside_a_moof = false;
+    for (std::size_t k = 0; k < moofs.size(); ++k) {
+      inside_a_moof = inside_a_moof || (moofs[k] < cut && cut < mdats[k]);
+    }
+    testing::VideoProbe probe;
+    try {
+      probe = testing::probe_video(cut_path, false, testing::FileEnd::may_be_cut);
+    } catch (const std::runtime_error& error) {
+      // libavformat reads the first few moof boxes while it opens the file, and refuses a
+      // file that ends inside one.
+      if (inside_a_moof) continue;
+      ADD_FAILURE() << "cut at byte " << cut << " of " << bytes.size()
+                    << ", inside a sample: " << error.what();
+      continue;
+    }
+    EXPECT_GE(probe.frames, whole_fragments * kKeyframeInterval) << "cut at byte " << cut;
+    EXPECT_LE(probe.frames, (whole_fragments + 1) * kKeyframeInterval) << "cut at byte " << cut;
+    EXPECT_GE(probe.frames, previous_frames) << "cut at byte " << cut;
+    previous_frames = probe.frames;
+  }
+  EXPECT_EQ(previous_frames, std::size_t{kFrames});
 }
 
 TEST_F(Mp4SinkTest, FullDeviceIsASinkErrorNamingThePathAndTheReason) {

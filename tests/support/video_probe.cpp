@@ -47,8 +47,8 @@ std::string error_text(int code) {
 
 class Prober {
  public:
-  Prober(const std::string& path, bool decode_pixels)
-      : path_(path), decode_pixels_(decode_pixels) {}
+  Prober(const std::string& path, bool decode_pixels, FileEnd end)
+      : path_(path), decode_pixels_(decode_pixels), end_(end) {}
 
   VideoProbe run() {
     AVFormatContext* input = nullptr;
@@ -83,10 +83,21 @@ class Prober {
     std::int64_t end = std::numeric_limits<std::int64_t>::min();
     const std::int64_t frame_ticks =
         probe.fps > 0 ? av_rescale_q(1, av_inv_q(rate), stream->time_base) : 0;
+    const std::int64_t file_bytes = avio_size(input->pb);
     for (;;) {
       const int read = av_read_frame(input, packet);
       if (read == AVERROR_EOF) break;
+      if (read < 0 && end_ == FileEnd::may_be_cut && avio_feof(input->pb)) {
+        break;  // the demuxer ran into the end inside a fragment's header
+      }
       check(read, "reading a packet");
+      // A sample the file ends inside comes back short and flagged corrupt: it is the cut
+      // tail, and nothing follows it.
+      if (end_ == FileEnd::may_be_cut && (packet->flags & AV_PKT_FLAG_CORRUPT) != 0 &&
+          file_bytes > 0 && packet->pos >= 0 && packet->pos + packet->size >= file_bytes) {
+        av_packet_unref(packet);
+        break;
+      }
       if (packet->stream_index == stream_index) {
         if (packet->pts != AV_NOPTS_VALUE) {
           first = std::min(first, packet->pts);
@@ -157,6 +168,7 @@ class Prober {
 
   std::string path_;
   bool decode_pixels_;
+  FileEnd end_;
   // The decoder and frames go before the input they read from.
   std::unique_ptr<AVFormatContext, InputFree> input_;
   std::unique_ptr<AVCodecContext, CodecContextFree> codec_;
@@ -166,8 +178,8 @@ class Prober {
 
 }  // namespace
 
-VideoProbe probe_video(const std::string& path, bool decode_pixels) {
-  return Prober(path, decode_pixels).run();
+VideoProbe probe_video(const std::string& path, bool decode_pixels, FileEnd end) {
+  return Prober(path, decode_pixels, end).run();
 }
 
 }  // namespace rugosim::testing

@@ -21,9 +21,18 @@ struct VideoProbe {
   std::vector<Image> decoded_rgba;  // every frame in display order, only when asked
 };
 
+// How the file may end. A fragmented MP4 whose writer was killed outright can end part way
+// through its last fragment: players play the fragments before it and stop there.
+enum class FileEnd {
+  complete,    // every sample the container lists must be whole and decode
+  may_be_cut,  // a sample the file ends inside is the cut tail: not decoded
+};
+
 // Throws std::runtime_error naming the file when it cannot be opened, has no video stream, or
-// its video cannot be decoded. Pixels are converted to RGBA with the matrix and range the
-// stream is tagged with (BT.601 when untagged).
-VideoProbe probe_video(const std::string& path, bool decode_pixels = false);
+// its video cannot be decoded (with FileEnd::may_be_cut: a sample wholly inside the file that
+// does not decode, or a read error before the end of the file). Pixels are converted to RGBA with
+// the matrix and range the stream is tagged with (BT.601 when untagged).
+VideoProbe probe_video(const std::string& path, bool decode_pixels = false,
+                       FileEnd end = FileEnd::complete);
 
 }  // namespace rugosim::testing
