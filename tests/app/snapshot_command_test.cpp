@@ -28,6 +28,7 @@
 
 #include "render/image.h"
 #include "render/sinks/png_io.h"
+#include "support/file_text.h"
 #include "support/program_under_test.h"
 
 namespace {
@@ -45,12 +46,7 @@ std::string figure12a() {
   return (source_dir() / "scenes" / "figure12a.json").string();
 }
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using rugosim::testing::read_text;
 
 void write_text(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);

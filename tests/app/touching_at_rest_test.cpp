@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "stress/stress_checks.h"
+#include "support/file_text.h"
 #include "support/program_under_test.h"
 
 namespace {
@@ -35,12 +36,7 @@ class TouchingAtRest : public ::testing::TestWithParam<std::tuple<Case, const ch
   const fs::path& dir_ = scratch_.path();
 };
 
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
+using rugosim::testing::read_text;
 
 TEST_P(TouchingAtRest, ValidatesRestsBelowAPixelAndSleeps) {
   const auto& [c, accuracy] = GetParam();

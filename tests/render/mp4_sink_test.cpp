@@ -26,6 +26,7 @@ extern "C" {
 #include <libavutil/log.h>
 }
 
+#include "support/file_text.h"
 #include "support/video_probe.h"
 
 namespace rugosim {
@@ -185,14 +186,8 @@ TEST_F(Mp4SinkTest, RepeatedPicturesAreEncodedAsIfConvertedAgain) {
   const std::string numbered = encode("numbered.mp4", true);
   const std::string plain = encode("plain.mp4", false);
   EXPECT_EQ(testing::probe_video(numbered).frames, 40u);
-  auto bytes = [](const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-  };
-  const std::string bytes_a = bytes(numbered);
-  const std::string bytes_b = bytes(plain);
+  const std::string bytes_a = testing::read_text(numbered);
+  const std::string bytes_b = testing::read_text(plain);
   EXPECT_FALSE(bytes_a.empty());
   EXPECT_EQ(bytes_a, bytes_b);
 }
@@ -266,13 +261,7 @@ TEST_F(Mp4SinkTest, AFileCutAtAnyByteKeepsEveryFragmentBeforeTheCut) {
     }
     sink.close();
   }
-  std::string bytes;
-  {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    bytes = text.str();
-  }
+  const std::string bytes = testing::read_text(path);
   // Where each fragment's boxes start (a box's type follows its 4-byte size).
   auto boxes = [&](const char* type) {
     std::vector<std::size_t> starts;

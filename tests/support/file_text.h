@@ -1,0 +1,19 @@
+// A whole file as a string (empty when it cannot be read): the tests compare outputs, golden
+// texts and stderr logs byte for byte.
+#pragma once
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace rugosim::testing {
+
+inline std::string read_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+}  // namespace rugosim::testing
