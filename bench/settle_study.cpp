@@ -13,7 +13,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,6 +29,7 @@
 #include "render/app/accuracy_options.h"
 #include "render/app/scene_input.h"
 #include "support/pile_scene.h"
+#include "support/rest_creep.h"
 
 namespace rugosim::study {
 namespace {
@@ -95,17 +95,9 @@ struct Frame {
 Frame record(const World& world) {
   Frame f;
   f.position.resize(world.body_count());
-  f.narrowest_band.assign(world.body_count(), std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < world.body_count(); ++i)
     f.position[i] = world.body(i).state().position;
-  for (const ContactManifold& m : world.manifolds()) {
-    if (m.state() != PairState::kContact) continue;
-    for (const Contact& c : m.contacts) {
-      const double band = c.lambda_a + c.lambda_b;
-      f.narrowest_band[m.body_a] = std::min(f.narrowest_band[m.body_a], band);
-      f.narrowest_band[m.body_b] = std::min(f.narrowest_band[m.body_b], band);
-    }
-  }
+  f.narrowest_band = testing::narrowest_contact_bands(world);
   return f;
 }
 

@@ -9,10 +9,8 @@
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <functional>
 #include <signal.h>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <sys/resource.h>

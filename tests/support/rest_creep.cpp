@@ -1,28 +1,37 @@
 #include "support/rest_creep.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace rugosim::testing {
 
+std::vector<double> narrowest_contact_bands(const World& world) {
+  std::vector<double> band(world.body_count(), std::numeric_limits<double>::infinity());
+  for (const ContactManifold& m : world.manifolds()) {
+    if (m.state() != PairState::kContact) continue;
+    for (const Contact& c : m.contacts) {
+      band[m.body_a] = std::min(band[m.body_a], c.lambda_a + c.lambda_b);
+      band[m.body_b] = std::min(band[m.body_b], c.lambda_a + c.lambda_b);
+    }
+  }
+  return band;
+}
+
 void RestCreepTracker::record(const World& world) {
   std::vector<Sample> frame(world.body_count());
   movable_.assign(world.body_count(), false);
+  const std::vector<double> band = narrowest_contact_bands(world);
   for (std::size_t i = 0; i < world.body_count(); ++i) {
     frame[i].position = world.body(i).state().position;
     frame[i].asleep = world.asleep(i);
+    frame[i].narrowest_band = std::isinf(band[i]) ? 0.0 : band[i];
     movable_[i] = !world.body(i).fixed();
   }
   for (const ContactManifold& m : world.manifolds()) {
     if (m.state() != PairState::kContact) continue;
-    double band = std::numeric_limits<double>::infinity();
-    for (const Contact& c : m.contacts)
-      band = std::min(band, c.lambda_a + c.lambda_b);
-    for (const auto& [self, other] : {std::pair{m.body_a, m.body_b}, {m.body_b, m.body_a}}) {
-      Sample& s = frame[self];
-      s.partners.push_back(other);
-      s.narrowest_band = s.narrowest_band == 0.0 ? band : std::min(s.narrowest_band, band);
-    }
+    frame[m.body_a].partners.push_back(m.body_b);
+    frame[m.body_b].partners.push_back(m.body_a);
   }
   for (Sample& s : frame)
     std::sort(s.partners.begin(), s.partners.end());

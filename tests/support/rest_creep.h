@@ -17,6 +17,10 @@
 
 namespace rugosim::testing {
 
+// Per body of `world`, the narrowest band (λ_a + λ_b, m) among its contacts of touching pairs;
+// +inf for a body that touches nothing.
+std::vector<double> narrowest_contact_bands(const World& world);
+
 struct RestCreep {
   std::size_t resting = 0;          // bodies that rested through their last awake second
   std::size_t over_band = 0;        // of those, the ones that moved more than their band
