@@ -187,7 +187,12 @@ int main(int argc, char** argv) {
   app.add_option("--csv", o.csv, "Also write the rows to this CSV file");
   rugosim::app::add_accuracy_options(app, o.accuracy);
   rugosim::app::add_threads_option(app, o.threads);
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    // As the program does (render/app/main.cpp): --help exits 0, usage errors 2.
+    return app.exit(e) == 0 ? rugosim::app::kExitOk : rugosim::app::kExitUsage;
+  }
   if (o.scene.empty() == (o.pile == 0)) {
     std::fputs("error: give a scene file or --pile N (one of them)\n", stderr);
     return rugosim::app::kExitUsage;
