@@ -73,11 +73,11 @@ std::vector<Setting> settings() {
   return out;
 }
 
-// The tightest settings of the study: the figure scenes' reference.
 // The reference is checked against a run at this share of its step (the per-scene table's last
 // column).
 constexpr double kReferenceCheckShare = 0.25;
 
+// The tightest settings of the study: the figure scenes' reference.
 Accuracy reference_accuracy() {
   return Accuracy{.max_step = 6.25e-5,
                   .rest_stride = 1,
