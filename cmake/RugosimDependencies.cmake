@@ -9,11 +9,13 @@ find_package(fmt REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3.11 REQUIRED)
 
-# Renderer: off-screen GL (OSMesa, EGL), PNG, and FFmpeg for MP4.
+# Renderer: off-screen GL (OSMesa, EGL), PNG, and FFmpeg for MP4 and GIF (libavfilter: the
+# GIF palette).
 pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
 pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)
 pkg_check_modules(PNG REQUIRED IMPORTED_TARGET libpng)
-pkg_check_modules(LIBAV REQUIRED IMPORTED_TARGET libavcodec libavformat libavutil libswscale)
+pkg_check_modules(LIBAV REQUIRED IMPORTED_TARGET libavcodec libavformat libavfilter libavutil
+                  libswscale)
 
 if(RUGOSIM_BUILD_TESTS)
   find_package(GTest REQUIRED)

@@ -13,7 +13,7 @@ packages=(
   libcli11-dev libfmt-dev nlohmann-json3-dev
   # renderer: off-screen OpenGL, PNG, MP4 (H.264 through libx264)
   libosmesa6-dev libegl-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri libpng-dev
-  libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
+  libavcodec-dev libavformat-dev libavfilter-dev libavutil-dev libswscale-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # the pile benchmark's competitor

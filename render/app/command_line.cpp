@@ -1,6 +1,12 @@
 #include "render/app/command_line.h"
 
+#include <algorithm>
+#include <cstddef>
 #include <limits>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include "engine/core/version.h"
 #include "render/app/accuracy_options.h"
@@ -63,21 +69,28 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       "frames simulated so far are written and the exit code is 130.");
 
   c.render = c.app.add_subcommand(
-      "render", "render a scene off-screen to an MP4 clip, a PNG sequence or a film strip");
+      "render",
+      "render a scene off-screen to an MP4 or GIF clip, a PNG sequence, a still or a film strip");
   c.render->add_option("SCENE", c.render_options.scene_path, "scene file (JSON)")->required();
   c.render
       ->add_option("-o,--output", c.render_options.output,
-                   "clip.mp4, a PNG pattern like out/f_%04d.png, or with --strip one PNG")
+                   "clip.mp4, clip.gif, a PNG pattern like out/f_%04d.png, or one PNG: a still "
+                   "(--frame K) or a strip (--strip N)")
       ->required()
       ->type_name("OUT");
   c.render
       ->add_option("--format", c.render_options.format,
-                   "mp4 or png (default: from OUT: .mp4, or a pattern with %d)")
-      ->check(CLI::IsMember({"mp4", "png"}));
+                   "mp4, gif or png (default: from OUT's extension)")
+      ->check(CLI::IsMember({"mp4", "gif", "png"}));
   c.render
       ->add_option("--frames", c.render_options.frames,
                    "frames A:B, inclusive (default: 0 to duration × fps)")
       ->type_name("A:B");
+  c.render
+      ->add_option("--frame", c.render_options.frame,
+                   "one still: frame K (0 to duration × fps) as one PNG")
+      ->check(number_in({0, false, 1e9, false, true, "frame"}))
+      ->type_name("K");
   c.render->add_option("--size", c.render_options.size, "frame size (default: render.size)")
       ->type_name("WxH");
   c.render->add_option("--fps", c.render_fps, "frames per second (default: render.fps)")
@@ -142,6 +155,8 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       "  rugosim render scenes/figure12a.json -o out/frames/f_%04d.png --frames 0:59 --size "
       "1920x1080\n"
       "  rugosim render scenes/figure12b.json -o out/strip.png --strip 6 --size 480x360\n"
+      "  rugosim render scenes/figure12a.json -o out/figure12a.gif --size 480x270 --fps 25\n"
+      "  rugosim render scenes/figure12a.json -o out/still.png --frame 90 --size 1920x1080\n"
       "An existing OUT is kept unless -y is given. On Ctrl-C the frame in hand is finished, the "
       "output is closed (a playable MP4) and the exit code is 130.");
 
@@ -239,6 +254,54 @@ void finish_parse(CommandLine& c) {
     c.render_options.overlays = overlays;
   }
   c.plot_options.contacts = !c.no_contacts;
+}
+
+namespace {
+
+// The optimal string alignment distance: insertions, deletions, substitutions and swaps of
+// neighbours, each one edit (the typos people make on a command name).
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  const std::size_t n = a.size();
+  const std::size_t m = b.size();
+  std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1, 0));
+  for (std::size_t i = 0; i <= n; ++i)
+    d[i][0] = i;
+  for (std::size_t j = 0; j <= m; ++j)
+    d[0][j] = j;
+  for (std::size_t i = 1; i <= n; ++i) {
+    for (std::size_t j = 1; j <= m; ++j) {
+      const std::size_t change = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + change});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+      }
+    }
+  }
+  return d[n][m];
+}
+
+}  // namespace
+
+std::string unknown_command_error(const CommandLine& c, const std::string& word) {
+  if (word.empty() || word.front() == '-') return {};
+  std::vector<std::string> names;
+  for (const CLI::App* command : c.app.get_subcommands({})) {
+    if (command->get_name() == word) return {};
+    names.push_back(command->get_name());
+  }
+  std::string nearest;
+  std::size_t best = 3;  // more than two edits away is no typo
+  for (const std::string& name : names) {
+    const std::size_t distance = edit_distance(word, name);
+    if (distance < best) {
+      best = distance;
+      nearest = name;
+    }
+  }
+  if (!nearest.empty()) {
+    return fmt::format("unknown command \"{}\"; did you mean \"{}\"?", word, nearest);
+  }
+  return fmt::format("unknown command \"{}\"; the commands are {}", word, fmt::join(names, ", "));
 }
 
 }  // namespace rugosim::app

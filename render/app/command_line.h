@@ -46,4 +46,10 @@ std::unique_ptr<CommandLine> make_command_line(int cpus);
 // leaves the scene's value in force).
 void finish_parse(CommandLine& c);
 
+// When `word` (the first argument) is not an option and names no command: the error for it,
+// with the nearest command when one is at most two edits away (a letter added, dropped,
+// changed, or two neighbours swapped), e.g. `unknown command "simulte"; did you mean
+// "simulate"?`. Empty when `word` is an option or a command.
+std::string unknown_command_error(const CommandLine& c, const std::string& word);
+
 }  // namespace rugosim::app

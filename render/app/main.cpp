@@ -1,4 +1,6 @@
 // The rugosim program: parses the command line (command_line.h) and runs the chosen command.
+#include <string>
+
 #include <fmt/core.h>
 
 #include "engine/core/thread_pool.h"
@@ -10,6 +12,12 @@ int main(int argc, char** argv) {
   using namespace rugosim::app;
   const std::unique_ptr<CommandLine> command_line = make_command_line(rugosim::available_cpus());
   CommandLine& c = *command_line;
+  // A misspelt command: CLI11 would only say that the word was not expected.
+  const std::string unknown = argc > 1 ? unknown_command_error(c, argv[1]) : std::string();
+  if (!unknown.empty()) {
+    fmt::print(stderr, "error: {}\nRun with --help for more information.\n", unknown);
+    return kExitUsage;
+  }
   try {
     c.app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,3 +1,4 @@
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -23,6 +24,7 @@
 #include "render/draw/scene_renderer.h"
 #include "render/gl/gl_context.h"
 #include "render/sinks/film_strip.h"
+#include "render/sinks/gif_sink.h"
 #include "render/sinks/mp4_sink.h"
 #include "render/sinks/png_io.h"
 #include "render/sinks/png_sequence_sink.h"
@@ -30,17 +32,19 @@
 namespace rugosim::app {
 namespace {
 
-enum class OutputKind { kMp4, kPngSequence, kStrip };
+// What -o (and --format) ask for: a clip (MP4, GIF), every frame as PNG files, or one PNG of
+// one frame (a still) or of several (a strip).
+enum class OutputKind { kMp4, kGif, kPngSequence, kPngStill, kStrip };
+
+bool writes_one_png(OutputKind kind) {
+  return kind == OutputKind::kPngStill || kind == OutputKind::kStrip;
+}
 
 // A usage error: printed as "error: ..." with exit code 2, before anything is written.
 class UsageError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
-
-bool ends_with(std::string_view text, std::string_view tail) {
-  return text.size() >= tail.size() && text.substr(text.size() - tail.size()) == tail;
-}
 
 std::size_t parse_count(std::string_view text, std::string_view what) {
   std::size_t value = 0;
@@ -51,27 +55,66 @@ std::size_t parse_count(std::string_view text, std::string_view what) {
   return value;
 }
 
+// A file name's extension, lower case, with its dot ("" when it has none).
+std::string extension_of(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& ch : ext)
+    ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return ext;
+}
+
 OutputKind output_kind(const RenderOptions& o) {
+  const std::string ext = extension_of(o.output);
+  const std::string named = ext.empty() ? ext : ext.substr(1);
+  const bool known = named == "mp4" || named == "gif" || named == "png";
+  // A file named for one format holding another is a mistake (a name without one of these
+  // extensions, such as /dev/null, takes any --format).
+  if (!o.format.empty() && known && named != o.format) {
+    throw UsageError(fmt::format("-o {} with --format {}: the name says {}; make them agree",
+                                 o.output, o.format, named));
+  }
   if (o.strip > 0) {
+    if (o.frame) {
+      throw UsageError("--frame K writes one frame, --strip N several side by side: give one");
+    }
     if (!o.format.empty() && o.format != "png") {
       throw UsageError("--strip writes one PNG: --format must be png");
     }
-    return OutputKind::kStrip;
-  }
-  if (o.format == "mp4") return OutputKind::kMp4;
-  if (o.format == "png") {
-    if (!is_png_pattern(o.output)) {
+    if (named != "png" && o.format.empty()) {
       throw UsageError(fmt::format(
-          "-o {}: a PNG sequence needs a pattern with one %d, %Nd or %0Nd (e.g. out/f_%04d.png)",
+          "-o {}: --strip writes one PNG, so OUT must end in .png (or give --format png)",
           o.output));
     }
-    return OutputKind::kPngSequence;
+    return OutputKind::kStrip;
   }
-  if (ends_with(o.output, ".mp4")) return OutputKind::kMp4;
-  if (is_png_pattern(o.output)) return OutputKind::kPngSequence;
+  const std::string format = o.format.empty() ? named : o.format;
+  if (format == "mp4" || format == "gif") {
+    if (o.frame) {
+      throw UsageError(fmt::format(
+          "--frame K writes one still PNG, not {} clip; for part of a clip use --frames A:B",
+          format == "mp4" ? "an MP4" : "a GIF"));
+    }
+    return format == "mp4" ? OutputKind::kMp4 : OutputKind::kGif;
+  }
+  if (format == "png") {
+    if (is_png_pattern(o.output)) {
+      if (o.frame) {
+        throw UsageError(
+            fmt::format("-o {}: --frame K writes one still, so OUT is a file name without %d (e.g. "
+                        "still.png); for several frames use --frames A:B",
+                        o.output));
+      }
+      return OutputKind::kPngSequence;
+    }
+    if (o.frame) return OutputKind::kPngStill;
+    throw UsageError(fmt::format(
+        "-o {}: one PNG file holds one frame: add --frame K for a still or --strip N for a "
+        "strip, or give a pattern with one %d, %Nd or %0Nd (e.g. out/f_%04d.png) for every frame",
+        o.output));
+  }
   throw UsageError(fmt::format(
-      "-o {}: cannot tell the output format; expected a name ending in .mp4, a PNG pattern like "
-      "out/f_%04d.png, or --format mp4|png",
+      "-o {}: cannot tell the output format; expected a name ending in .mp4 or .gif, a PNG "
+      "pattern like out/f_%04d.png, a .png with --frame K or --strip N, or --format mp4|gif|png",
       o.output));
 }
 
@@ -149,7 +192,20 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
                  o.fps ? "--fps" : "render.fps", loaded.world->settings().min_step);
   if (!run.error.empty()) throw UsageError(run.error);
   const std::size_t last = run.last;
-  plan.range = frame_range(o.frames, last);
+  if (o.frame && !o.frames.empty()) {
+    throw UsageError("--frame K (one still) and --frames A:B (a range): give one");
+  }
+  if (o.frame && *o.frame > last) {
+    throw UsageError(
+        fmt::format("--frame {}: the clip's last frame is {} (duration × fps)", *o.frame, last));
+  }
+  plan.range = o.frame ? FrameRange{*o.frame, *o.frame} : frame_range(o.frames, last);
+  if (plan.kind == OutputKind::kGif && !gif_fps_is_valid(plan.clip.fps)) {
+    throw UsageError(fmt::format(
+        "{} {:g}: a GIF plays at most 50 frames per second (its delays are whole centiseconds "
+        "and browsers slow delays under 2 cs); use --fps 50 or less",
+        o.fps ? "--fps" : "render.fps", plan.clip.fps));
+  }
   if (plan.kind == OutputKind::kStrip) {
     plan.clip.frames = strip_frame_indices(plan.range.first, plan.range.last, o.strip);
   } else {
@@ -221,19 +277,24 @@ int run_render(const RenderOptions& o) {
   const SigintGuard sigint;
   try {
     std::unique_ptr<FrameSink> sink;
-    std::vector<Image> strip;
+    std::vector<Image> kept;  // the frames of a still or a strip
     if (plan.kind == OutputKind::kMp4) {
       quiet_ffmpeg_logs();
       sink = std::make_unique<Mp4Sink>(o.output, plan.clip.width, plan.clip.height, plan.mp4);
+    } else if (plan.kind == OutputKind::kGif) {
+      quiet_ffmpeg_logs();
+      sink = std::make_unique<GifSink>(o.output, plan.clip.width, plan.clip.height,
+                                       GifOptions{plan.clip.fps});
     } else if (plan.kind == OutputKind::kPngSequence) {
       sink = std::make_unique<PngSequenceSink>(o.output, plan.png, o.png_workers);
     } else {
-      // The strip is written at the end: a folder that is not there fails now, not after
-      // rendering.
+      // A still or a strip is written at the end: a folder that is not there fails now, not
+      // after rendering.
       const std::filesystem::path folder = std::filesystem::path(o.output).parent_path();
       if (!folder.empty() && !std::filesystem::is_directory(folder)) {
-        throw SinkError(fmt::format("{}: No such file or directory (the folder of the strip)",
-                                    folder.string()));
+        throw SinkError(fmt::format("{}: No such file or directory (the folder of the {})",
+                                    folder.string(),
+                                    plan.kind == OutputKind::kStrip ? "strip" : "still"));
       }
     }
     Progress progress(static_cast<double>(plan.clip.frames.size()), stderr,
@@ -245,7 +306,7 @@ int run_render(const RenderOptions& o) {
           if (sink) {
             sink->write(image, frame);
           } else {
-            strip.push_back(image);
+            kept.push_back(image);
           }
           progress.update(static_cast<double>(++done));
         },
@@ -255,16 +316,19 @@ int run_render(const RenderOptions& o) {
     if (plan.kind == OutputKind::kStrip && !result.interrupted) {
       write_png_file(
           o.output,
-          compose_film_strip(strip, std::max(2, plan.clip.width / 160), {255, 255, 255, 255}),
+          compose_film_strip(kept, std::max(2, plan.clip.width / 160), {255, 255, 255, 255}),
           plan.png);
+    } else if (plan.kind == OutputKind::kPngStill && kept.size() == 1) {
+      write_png_file(o.output, kept.front(), plan.png);
     }
     // The simulation runs on the pipeline's thread: its first crossing is told here, after it.
     CrossingWatch().check(*loaded->world, stderr);
+    // A still or a strip is written whole or not at all: interrupted, it is not written.
+    const char* where = plan.kind == OutputKind::kStrip ? "in the strip" : "written to";
+    if (result.interrupted && writes_one_png(plan.kind)) where = "rendered, nothing written to";
     fmt::print(stderr, "{}: {} frame{} {} {} in {:.3g} s ({:.3g} frames/s)\n",
                result.interrupted ? "interrupted" : "done", result.frames,
-               result.frames == 1 ? "" : "s",
-               plan.kind == OutputKind::kStrip ? "in the strip" : "written to", o.output,
-               progress.wall_seconds(),
+               result.frames == 1 ? "" : "s", where, o.output, progress.wall_seconds(),
                static_cast<double>(result.frames) / std::max(progress.wall_seconds(), 1e-9));
     return strict_exit_code(*loaded->world, o.strict,
                             result.interrupted ? kExitInterrupted : kExitOk, stderr);

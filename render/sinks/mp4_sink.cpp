@@ -22,6 +22,8 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
+#include "render/sinks/libav_support.h"
+
 namespace rugosim {
 namespace {
 
@@ -34,45 +36,8 @@ constexpr std::array<std::string_view, 10> kPresets{"ultrafast", "superfast", "v
 // browsers and the ISO BMFF readers expect).
 constexpr const char* kMovFlags = "frag_keyframe+empty_moov+default_base_moof";
 
-std::string av_error_text(int code) {
-  std::array<char, AV_ERROR_MAX_STRING_SIZE> text{};
-  if (av_strerror(code, text.data(), text.size()) < 0) {
-    std::snprintf(text.data(), text.size(), "error %d", code);
-  }
-  return std::string(text.data());
-}
-
-struct FormatContextFree {
-  void operator()(AVFormatContext* format) const {
-    avio_closep(&format->pb);  // null when never opened or already closed
-    avformat_free_context(format);
-  }
-};
-struct CodecContextFree {
-  void operator()(AVCodecContext* codec) const { avcodec_free_context(&codec); }
-};
-struct FrameFree {
-  void operator()(AVFrame* frame) const { av_frame_free(&frame); }
-};
-struct PacketFree {
-  void operator()(AVPacket* packet) const { av_packet_free(&packet); }
-};
 struct ScalerFree {
   void operator()(SwsContext* scaler) const { sws_freeContext(scaler); }
-};
-
-// An AVDictionary of options, freed on every path.
-class Dictionary {
- public:
-  Dictionary() = default;
-  ~Dictionary() { av_dict_free(&entries_); }
-  Dictionary(const Dictionary&) = delete;
-  Dictionary& operator=(const Dictionary&) = delete;
-  AVDictionary** address() { return &entries_; }
-  int count() const { return av_dict_count(entries_); }
-
- private:
-  AVDictionary* entries_ = nullptr;
 };
 
 }  // namespace

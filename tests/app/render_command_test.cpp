@@ -26,6 +26,7 @@
 #include "render/sinks/png_io.h"
 #include "support/file_text.h"
 #include "support/program_under_test.h"
+#include "support/render_command_fixture.h"
 #include "support/video_probe.h"
 
 namespace {
@@ -40,175 +41,16 @@ using rugosim::testing::VideoProbe;
 using rugosim::testing::program;
 using rugosim::testing::source_dir;
 
-std::string figure12a() {
-  return (source_dir() / "scenes" / "figure12a.json").string();
-}
-
+using rugosim::testing::differing_pixels;
+using rugosim::testing::figure12a;
+using rugosim::testing::frames_interrupted;
+using rugosim::testing::frames_reported;
+using rugosim::testing::listing;
+using rugosim::testing::Outcome;
 using rugosim::testing::read_text;
-
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
-// Pixels that differ in any channel; all of them when the sizes differ.
-std::size_t differing_pixels(const Image& a, const Image& b) {
-  if (a.width != b.width || a.height != b.height || a.rgba.size() != b.rgba.size()) {
-    return std::max(a.rgba.size(), b.rgba.size()) / 4 + 1;
-  }
-  std::size_t count = 0;
-  for (std::size_t i = 0; i + 3 < a.rgba.size(); i += 4) {
-    if (!std::equal(a.rgba.begin() + static_cast<std::ptrdiff_t>(i),
-                    a.rgba.begin() + static_cast<std::ptrdiff_t>(i + 4),
-                    b.rgba.begin() + static_cast<std::ptrdiff_t>(i))) {
-      ++count;
-    }
-  }
-  return count;
-}
-
-// The names of the entries of a folder, sorted.
-std::vector<std::string> listing(const fs::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(dir))
-    names.push_back(entry.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-// The largest N of the "progress: N/M frames rendered" lines of a stderr file.
-std::size_t frames_reported(const std::string& err) {
-  std::size_t most = 0;
-  std::istringstream lines(err);
-  const std::string prefix = "progress: ";
-  for (std::string line; std::getline(lines, line);) {
-    if (line.rfind(prefix, 0) != 0 || line.find("frames rendered") == std::string::npos) continue;
-    most = std::max<std::size_t>(most, std::strtoul(line.c_str() + prefix.size(), nullptr, 10));
-  }
-  return most;
-}
-
-// N of the summary line "interrupted: N frames written to ..."; -1 when there is none.
-long frames_interrupted(const std::string& err) {
-  const std::string key = "interrupted: ";
-  const std::size_t at = err.find(key);
-  if (at == std::string::npos) return -1;
-  return std::strtol(err.c_str() + at + key.size(), nullptr, 10);
-}
-
-// The program's exit code, or 128 + the signal that ended it.
-int wait_for(pid_t pid) {
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return -1;
-  }
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
-  return -1;
-}
-
-struct Outcome {
-  int code = -1;
-  std::string err;  // what the program wrote on stderr
-};
-
-// Each test in its own folder, kept when the test fails (its path is printed) for a look at the
-// outputs, removed otherwise.
-class RenderCommand : public ::testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::path(::testing::TempDir()) /
-           std::string("rugosim_render_").append(std::to_string(::getpid())) / info->name();
-    fs::remove_all(dir_);
-    fs::create_directories(dir_ / "out");
-  }
-  void TearDown() override {
-    if (HasFailure()) {
-      std::fprintf(stderr, "outputs kept in %s\n", dir_.c_str());
-    } else {
-      fs::remove_all(dir_);
-      std::error_code ignored;
-      fs::remove(dir_.parent_path(), ignored);  // when this was the last test's folder
-    }
-  }
-
-  // Starts `rugosim render ARGS...` with stdout discarded and stderr to a new file of the test's
-  // folder (returned in `err_file`); -1 when it cannot start.
-  pid_t start(const std::vector<std::string>& args, fs::path& err_file) {
-    err_file = dir_ / std::string("stderr_").append(std::to_string(++runs_)).append(".txt");
-    std::vector<std::string> all = {program(), "render"};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (std::string& a : all)
-      argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                     0644);
-    // SIGINT as a terminal would deliver it, even when this test runs in the background.
-    posix_spawnattr_t attributes;
-    posix_spawnattr_init(&attributes);
-    sigset_t defaults;
-    sigemptyset(&defaults);
-    sigaddset(&defaults, SIGINT);
-    posix_spawnattr_setsigdefault(&attributes, &defaults);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF);
-    pid_t pid = -1;
-    const int rc = ::posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ);
-    posix_spawnattr_destroy(&attributes);
-    posix_spawn_file_actions_destroy(&actions);
-    return rc == 0 ? pid : -1;
-  }
-
-  Outcome run(const std::vector<std::string>& args) {
-    fs::path err_file;
-    const pid_t pid = start(args, err_file);
-    if (pid < 0) return {};
-    Outcome r;
-    r.code = wait_for(pid);
-    r.err = read_text(err_file);
-    return r;
-  }
-
-  // figure12a with a fixed camera (so rendering starts at the first frame, no simulation of the
-  // whole clip before it) and the given render.overlays (a JSON list).
-  fs::path fixed_camera_scene(const std::string& overlays = "[]") {
-    std::string text = read_text(figure12a());
-    const std::string from = R"("camera": "auto", "overlays": [])";
-    const std::size_t at = text.find(from);
-    if (at == std::string::npos) return {};
-    text.replace(at, from.size(),
-                 std::string(R"("camera": {"center": [0, 1.1], "height": 2.6}, "overlays": )")
-                     .append(overlays));
-    const fs::path path =
-        dir_ / std::string("fixed_camera_").append(std::to_string(++scenes_)).append(".json");
-    write_text(path, text);
-    return path;
-  }
-
-  // Renders one frame of `scene` to a PNG (size 320x180) with extra options; empty on failure.
-  Image frame(const std::string& scene, std::size_t index, const std::vector<std::string>& extra) {
-    const fs::path out = dir_ / "out" / std::string("one_").append(std::to_string(++frames_));
-    fs::create_directories(out);
-    const std::string range = std::to_string(index).append(":").append(std::to_string(index));
-    std::vector<std::string> args = {
-        scene, "-o", (out / "f_%d.png").string(), "--frames", range, "--size", "320x180"};
-    args.insert(args.end(), extra.begin(), extra.end());
-    const Outcome r = run(args);
-    EXPECT_EQ(r.code, 0) << r.err;
-    const fs::path file = out / std::string("f_").append(std::to_string(index)).append(".png");
-    if (r.code != 0 || !fs::exists(file)) return {};
-    return read_png_file(file.string());
-  }
-
-  fs::path dir_;
-  int runs_ = 0;
-  int scenes_ = 0;
-  int frames_ = 0;
-};
+using rugosim::testing::RenderCommand;
+using rugosim::testing::wait_for;
+using rugosim::testing::write_text;
 
 TEST_F(RenderCommand, Mp4HoldsTheRequestedFramesAsH264) {
   const fs::path clip = dir_ / "out" / "clip.mp4";

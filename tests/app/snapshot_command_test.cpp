@@ -48,10 +48,7 @@ std::string figure12a() {
 
 using rugosim::testing::read_text;
 
-void write_text(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
+using rugosim::testing::write_text;
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;

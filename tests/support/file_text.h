@@ -1,5 +1,5 @@
 // A whole file as a string (empty when it cannot be read): the tests compare outputs, golden
-// texts and stderr logs byte for byte.
+// texts and stderr logs byte for byte; and a file written from one.
 #pragma once
 
 #include <filesystem>
@@ -14,6 +14,11 @@ inline std::string read_text(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();
+}
+
+inline void write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
 }
 
 }  // namespace rugosim::testing

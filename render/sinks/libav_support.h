@@ -1,0 +1,49 @@
+// What the FFmpeg sinks share: FFmpeg's error text, owners that free libav objects on every
+// path, and an options dictionary.
+#pragma once
+
+#include <string>
+
+extern "C" {
+#include <libavcodec/avcodec.h>
+#include <libavformat/avformat.h>
+#include <libavutil/dict.h>
+#include <libavutil/frame.h>
+}
+
+namespace rugosim {
+
+// FFmpeg's words for an error code ("No space left on device"), or "error N".
+std::string av_error_text(int code);
+
+struct FormatContextFree {
+  void operator()(AVFormatContext* format) const {
+    avio_closep(&format->pb);  // null when never opened or already closed
+    avformat_free_context(format);
+  }
+};
+struct CodecContextFree {
+  void operator()(AVCodecContext* codec) const { avcodec_free_context(&codec); }
+};
+struct FrameFree {
+  void operator()(AVFrame* frame) const { av_frame_free(&frame); }
+};
+struct PacketFree {
+  void operator()(AVPacket* packet) const { av_packet_free(&packet); }
+};
+
+// An AVDictionary of options, freed on every path.
+class Dictionary {
+ public:
+  Dictionary() = default;
+  ~Dictionary() { av_dict_free(&entries_); }
+  Dictionary(const Dictionary&) = delete;
+  Dictionary& operator=(const Dictionary&) = delete;
+  AVDictionary** address() { return &entries_; }
+  int count() const { return av_dict_count(entries_); }
+
+ private:
+  AVDictionary* entries_ = nullptr;
+};
+
+}  // namespace rugosim

@@ -1,0 +1,174 @@
+// `rugosim render` to the outputs chosen by OUT's extension besides MP4 and PNG sequences
+// (INTERFACE.md, "Command line"): a GIF clip decoded by libavformat/libavcodec and compared with
+// the PNG frames, a still equal to the same frame of a sequence, and the usage errors that keep
+// a file from holding another format than its name says.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "render/app/command_line.h"
+#include "render/image.h"
+#include "render/sinks/png_io.h"
+#include "support/file_text.h"
+#include "support/render_command_fixture.h"
+#include "support/video_probe.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using rugosim::Image;
+using rugosim::read_png_file;
+using rugosim::testing::figure12a;
+using rugosim::testing::listing;
+using rugosim::testing::Outcome;
+using rugosim::testing::probe_video;
+using rugosim::testing::read_text;
+using rugosim::testing::RenderCommand;
+using rugosim::testing::VideoProbe;
+
+// How far a GIF frame (256 colours, dithered) is from the RGB frame it was made of.
+struct PaletteError {
+  double mean = 0.0;       // mean |difference| over every channel of every pixel, in levels
+  double far_share = 0.0;  // share of pixels with a channel more than 48 levels off
+};
+
+PaletteError palette_error(const Image& gif, const Image& png) {
+  PaletteError e;
+  if (gif.width != png.width || gif.height != png.height) return {255.0, 1.0};
+  std::size_t far = 0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 3 < png.rgba.size(); i += 4) {
+    int worst = 0;
+    for (std::size_t c = 0; c < 3; ++c) {
+      const int d = std::abs(int{gif.rgba[i + c]} - int{png.rgba[i + c]});
+      sum += d;
+      worst = std::max(worst, d);
+    }
+    far += worst > 48 ? 1u : 0u;
+  }
+  const double pixels = static_cast<double>(png.rgba.size() / 4);
+  e.mean = sum / (3.0 * pixels);
+  e.far_share = static_cast<double>(far) / pixels;
+  return e;
+}
+
+TEST_F(RenderCommand, GifHoldsTheFramesAtTheClipsRateInItsPalette) {
+  const fs::path scene = fixed_camera_scene();
+  const std::string gif = (dir_ / "out" / "clip.gif").string();
+  const Outcome r = run({scene.string(), "-o", gif, "--frames", "0:30", "--size", "320x180"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("done: 31 frames written to"), std::string::npos) << r.err;
+  const VideoProbe probe = probe_video(gif, true);
+  EXPECT_EQ(probe.codec, "gif");
+  EXPECT_EQ(probe.width, 320);
+  EXPECT_EQ(probe.height, 180);
+  ASSERT_EQ(probe.frames, 31u);
+  // Whole-centisecond delays (3 and 4 at 30 fps) keep the clip's length within one.
+  EXPECT_NEAR(probe.duration_s, 31.0 / 30.0, 0.01 + 1e-9);
+  // Stated tolerance: one palette for the clip with error diffusion; the scene has a few flat
+  // fills and anti-aliased edges, so on average a channel is within 1 level (measured: 0.11)
+  // and at most 0.2% of the pixels (edge pixels) are more than 48 levels off (measured: none).
+  for (const std::size_t k : {0u, 15u, 30u}) {
+    const Image png = frame(scene.string(), k, {});
+    ASSERT_FALSE(png.rgba.empty());
+    const PaletteError e = palette_error(probe.decoded_rgba[k], png);
+    EXPECT_LT(e.mean, 1.0) << "frame " << k;
+    EXPECT_LT(e.far_share, 0.002) << "frame " << k;
+    std::printf("frame %zu: mean %.3f levels, %.4f%% of pixels past 48\n", k, e.mean,
+                100.0 * e.far_share);
+  }
+}
+
+TEST_F(RenderCommand, StillIsTheSameFrameAsInASequence) {
+  const fs::path scene = fixed_camera_scene();
+  const std::string still = (dir_ / "out" / "still.png").string();
+  const Outcome r = run({scene.string(), "-o", still, "--frame", "45", "--size", "320x180"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("done: 1 frame written to"), std::string::npos) << r.err;
+  EXPECT_EQ(listing(dir_ / "out"), std::vector<std::string>{"still.png"});
+  const Image from_sequence = frame(scene.string(), 45, {});
+  EXPECT_EQ(rugosim::testing::differing_pixels(read_png_file(still), from_sequence), 0u);
+}
+
+TEST_F(RenderCommand, StillAndGifAreKeptWithoutYAndReplacedWithIt) {
+  const fs::path scene = fixed_camera_scene();
+  for (const std::string name : {"still.png", "clip.gif"}) {
+    const std::string out = (dir_ / "out" / name).string();
+    rugosim::testing::write_text(out, "earlier");
+    // A still of frame 2, or a clip of frames 0 to 2.
+    std::vector<std::string> used = {scene.string(), "-o", out, "--size", "64x36"};
+    const std::vector<std::string> which = name == "still.png"
+                                               ? std::vector<std::string>{"--frame", "2"}
+                                               : std::vector<std::string>{"--frames", "0:2"};
+    used.insert(used.end(), which.begin(), which.end());
+    Outcome r = run(used);
+    EXPECT_EQ(r.code, 2) << name << "\n" << r.err;
+    EXPECT_NE(r.err.find("add -y"), std::string::npos) << r.err;
+    EXPECT_EQ(read_text(out), "earlier");
+    std::vector<std::string> forced = used;
+    forced.push_back("-y");
+    r = run(forced);
+    EXPECT_EQ(r.code, 0) << name << "\n" << r.err;
+    EXPECT_NE(read_text(out), "earlier");
+  }
+  EXPECT_EQ(listing(dir_ / "out"), (std::vector<std::string>{"clip.gif", "still.png"}));
+}
+
+TEST_F(RenderCommand, OutputsThatWouldHoldAnotherFormatThanTheirNameExit2AndWriteNothing) {
+  const std::string out = (dir_ / "out").string();
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;  // a part of what stderr must say
+  };
+  const std::vector<Case> cases = {
+      {{figure12a(), "-o", out + "/strip.mp4", "--strip", "4"}, "must end in .png"},
+      {{figure12a(), "-o", out + "/strip.png", "--strip", "4", "--format", "mp4"},
+       "the name says png"},
+      {{figure12a(), "-o", out + "/x.gif", "--format", "png", "--frame", "1"}, "the name says gif"},
+      {{figure12a(), "-o", out + "/x.png"}, "add --frame K"},
+      {{figure12a(), "-o", out + "/x.png", "--frame", "151"}, "last frame is 150"},
+      {{figure12a(), "-o", out + "/x.png", "--frame", "-1"}, "--frame"},
+      {{figure12a(), "-o", out + "/x.png", "--frame", "5", "--frames", "0:9"}, "give one"},
+      {{figure12a(), "-o", out + "/x.png", "--frame", "2", "--strip", "3"}, "give one"},
+      {{figure12a(), "-o", out + "/x.mp4", "--frame", "3"}, "not an MP4 clip"},
+      {{figure12a(), "-o", out + "/x.gif", "--frame", "3"}, "not a GIF clip"},
+      {{figure12a(), "-o", out + "/f_%d.png", "--frame", "3"}, "without %d"},
+      {{figure12a(), "-o", out + "/x.gif", "--fps", "60"}, "at most 50 frames per second"},
+      {{figure12a(), "-o", out + "/x.webm"}, "cannot tell the output format"},
+  };
+  for (const Case& c : cases) {
+    std::string shown;
+    for (const std::string& a : c.args)
+      shown.append(" ").append(a);
+    const Outcome r = run(c.args);
+    EXPECT_EQ(r.code, 2) << shown << "\n" << r.err;
+    EXPECT_NE(r.err.find("error"), std::string::npos) << shown << "\n" << r.err;
+    EXPECT_NE(r.err.find(c.message), std::string::npos)
+        << shown << "\nstderr lacks \"" << c.message << "\":\n"
+        << r.err;
+    EXPECT_TRUE(listing(dir_ / "out").empty()) << shown;
+  }
+}
+
+TEST(UnknownCommand, SuggestsTheNearestCommandWithinTwoEdits) {
+  const auto c = rugosim::app::make_command_line(1);
+  EXPECT_EQ(rugosim::app::unknown_command_error(*c, "simulte"),
+            "unknown command \"simulte\"; did you mean \"simulate\"?");
+  EXPECT_EQ(rugosim::app::unknown_command_error(*c, "redner"),
+            "unknown command \"redner\"; did you mean \"render\"?");
+  EXPECT_EQ(rugosim::app::unknown_command_error(*c, "plott"),
+            "unknown command \"plott\"; did you mean \"plot\"?");
+  EXPECT_EQ(rugosim::app::unknown_command_error(*c, "xyz"),
+            "unknown command \"xyz\"; the commands are validate, info, simulate, render, "
+            "snapshot, plot");
+  for (const std::string known : {"render", "simulate", "--help", "-h", ""})
+    EXPECT_EQ(rugosim::app::unknown_command_error(*c, known), "") << known;
+}
+
+}  // namespace
