@@ -18,6 +18,8 @@ pkg_check_modules(LIBAV REQUIRED IMPORTED_TARGET libavcodec libavformat libavfil
                   libswscale)
 
 if(RUGOSIM_BUILD_TESTS)
+  # The tests read animated WebP with libwebp's demux API (FFmpeg 5.1 cannot decode it).
+  pkg_check_modules(WEBPDEMUX REQUIRED IMPORTED_TARGET libwebpdemux)
   find_package(GTest REQUIRED)
 endif()
 if(RUGOSIM_BUILD_BENCHMARKS)

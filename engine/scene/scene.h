@@ -69,12 +69,16 @@ struct CameraSpec {
   double height = 0.0;         // m, of the visible world
 };
 
+// render.background for frames without a background (alpha 0 where no body is): PNG, GIF,
+// WebM, MOV and WebP keep it; an MP4 cannot.
+inline constexpr const char* kTransparentBackground = "transparent";
+
 struct RenderSpec {
   int width = SceneDefaults::kWidth;
   int height = SceneDefaults::kHeight;
   double fps = SceneDefaults::kFps;
   CameraSpec camera;
-  std::string background = SceneDefaults::kBackground;
+  std::string background = SceneDefaults::kBackground;  // "#rrggbb", or kTransparentBackground
   std::vector<std::string> overlays;
 };
 

@@ -207,14 +207,17 @@ void read_rugosity(Reader& r, const json& v, const std::string& path, std::size_
   }
 }
 
-// A colour: "#rrggbb" or "#rgb".
-void read_colour(Reader& r, const json& v, const std::string& path, std::string& colour) {
+// A colour: "#rrggbb" or "#rgb", or the word `also` where one is allowed.
+void read_colour(Reader& r, const json& v, const std::string& path, std::string& colour,
+                 const char* also = nullptr) {
   r.string(v, path, colour);
   const bool hex = (colour.size() == 7 || colour.size() == 4) && colour[0] == '#' &&
                    std::all_of(colour.begin() + 1, colour.end(),
                                [](char d) { return std::isxdigit(static_cast<unsigned char>(d)); });
-  if (v.is_string() && !hex) {
-    r.error(path, "expected a colour \"#rrggbb\" or \"#rgb\", got " + shown(v));
+  if (v.is_string() && !hex && (also == nullptr || colour != also)) {
+    r.error(path, std::string("expected a colour \"#rrggbb\" or \"#rgb\"") +
+                      (also != nullptr ? std::string(", or \"") + also + "\"" : std::string()) +
+                      ", got " + shown(v));
   }
 }
 
@@ -325,7 +328,8 @@ void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& 
     }
   }
   if (v.contains("background")) {
-    read_colour(r, v["background"], child(path, "background"), render.background);
+    read_colour(r, v["background"], child(path, "background"), render.background,
+                kTransparentBackground);
   }
   if (v.contains("overlays")) {
     const json& overlays = v["overlays"];

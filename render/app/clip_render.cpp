@@ -120,7 +120,7 @@ PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
                            const std::atomic<bool>* interrupted, std::string* renderer) {
   World& world = *loaded.world;
   RenderSettings settings;
-  settings.background = *parse_hex_color(loaded.scene.render.background);
+  settings.background = scene_background(loaded.scene);
   settings.anti_aliasing = plan.anti_aliasing;
   settings.overlays = plan.overlays;
   ClipSource source(world, plan, scene_camera(loaded.scene, plan.width, plan.height), interrupted);

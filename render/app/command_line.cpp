@@ -70,18 +70,19 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
 
   c.render = c.app.add_subcommand(
       "render",
-      "render a scene off-screen to an MP4 or GIF clip, a PNG sequence, a still or a film strip");
+      "render a scene off-screen to a clip (MP4, GIF, WebM, MOV, WebP), a PNG sequence, a still "
+      "or a film strip");
   c.render->add_option("SCENE", c.render_options.scene_path, "scene file (JSON)")->required();
   c.render
       ->add_option("-o,--output", c.render_options.output,
-                   "clip.mp4, clip.gif, a PNG pattern like out/f_%04d.png, or one PNG: a still "
-                   "(--frame K) or a strip (--strip N)")
+                   "clip.mp4, .gif, .webm, .mov or .webp, a PNG pattern like out/f_%04d.png, or "
+                   "one PNG: a still (--frame K) or a strip (--strip N)")
       ->required()
       ->type_name("OUT");
   c.render
       ->add_option("--format", c.render_options.format,
-                   "mp4, gif or png (default: from OUT's extension)")
-      ->check(CLI::IsMember({"mp4", "gif", "png"}));
+                   "mp4, gif, webm, mov, webp or png (default: from OUT's extension)")
+      ->check(CLI::IsMember({"mp4", "gif", "webm", "mov", "webp", "png"}));
   c.render
       ->add_option("--frames", c.render_options.frames,
                    "frames A:B, inclusive (default: 0 to duration × fps)")

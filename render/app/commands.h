@@ -35,9 +35,9 @@ int run_simulate(const SimulateOptions& options);
 
 struct RenderOptions {
   std::string scene_path;
-  std::string output;  // clip.mp4, clip.gif, a PNG pattern like out/f_%04d.png, or one PNG
-                       // (--frame: a still, --strip: a strip)
-  std::string format;  // "mp4", "gif" or "png"; empty: from the output's name
+  std::string output;  // clip.mp4 (.gif, .webm, .mov, .webp), a PNG pattern like
+                       // out/f_%04d.png, or one PNG (--frame: a still, --strip: a strip)
+  std::string format;  // "mp4", "gif", "webm", "mov", "webp" or "png"; empty: from the name
   std::string frames;  // "A:B", inclusive; empty: the whole clip
   std::optional<std::size_t> frame;  // --frame K: one still PNG of frame K
   std::string size;                  // "WxH"; empty: render.size
@@ -59,9 +59,9 @@ struct RenderOptions {
   int png_workers = 2;            // threads compressing a PNG sequence
 };
 
-// Renders a scene to an MP4 or GIF clip, a PNG sequence, a still or a film strip. Exit 2 for bad
-// options or a bad scene (nothing written), 1 for a GL, encoder or I/O failure, 130 on SIGINT after
-// closing the output so that it holds every frame rendered.
+// Renders a scene to a clip (MP4, GIF, WebM, MOV, WebP), a PNG sequence, a still or a strip. Exit 2
+// for bad options or a bad scene (nothing written), 1 for a GL, encoder or I/O failure, 130 on
+// SIGINT after closing the output so that it holds every frame rendered.
 int run_render(const RenderOptions& options);
 
 struct SnapshotOptions {

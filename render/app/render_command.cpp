@@ -23,8 +23,8 @@
 #include "render/app/sigint_guard.h"
 #include "render/draw/scene_renderer.h"
 #include "render/gl/gl_context.h"
+#include "render/sinks/encoded_clip_sink.h"
 #include "render/sinks/film_strip.h"
-#include "render/sinks/gif_sink.h"
 #include "render/sinks/mp4_sink.h"
 #include "render/sinks/png_io.h"
 #include "render/sinks/png_sequence_sink.h"
@@ -32,9 +32,14 @@
 namespace rugosim::app {
 namespace {
 
-// What -o (and --format) ask for: a clip (MP4, GIF), every frame as PNG files, or one PNG of
-// one frame (a still) or of several (a strip).
-enum class OutputKind { kMp4, kGif, kPngSequence, kPngStill, kStrip };
+// What -o (and --format) ask for: a clip (MP4, or GIF, WebM, MOV, WebP: encoded_clip_sink.h),
+// every frame as PNG files, or one PNG of one frame (a still) or of several (a strip).
+enum class OutputKind { kMp4, kClip, kPngSequence, kPngStill, kStrip };
+
+struct Output {
+  OutputKind kind = OutputKind::kMp4;
+  ClipFormat clip = ClipFormat::kGif;  // of kClip
+};
 
 bool writes_one_png(OutputKind kind) {
   return kind == OutputKind::kPngStill || kind == OutputKind::kStrip;
@@ -63,10 +68,10 @@ std::string extension_of(const std::string& path) {
   return ext;
 }
 
-OutputKind output_kind(const RenderOptions& o) {
+Output output_kind(const RenderOptions& o) {
   const std::string ext = extension_of(o.output);
   const std::string named = ext.empty() ? ext : ext.substr(1);
-  const bool known = named == "mp4" || named == "gif" || named == "png";
+  const bool known = named == "mp4" || named == "png" || parse_clip_format(named).has_value();
   // A file named for one format holding another is a mistake (a name without one of these
   // extensions, such as /dev/null, takes any --format).
   if (!o.format.empty() && known && named != o.format) {
@@ -85,16 +90,16 @@ OutputKind output_kind(const RenderOptions& o) {
           "-o {}: --strip writes one PNG, so OUT must end in .png (or give --format png)",
           o.output));
     }
-    return OutputKind::kStrip;
+    return {OutputKind::kStrip};
   }
   const std::string format = o.format.empty() ? named : o.format;
-  if (format == "mp4" || format == "gif") {
+  const std::optional<ClipFormat> clip = parse_clip_format(format);
+  if (format == "mp4" || clip) {
     if (o.frame) {
       throw UsageError(fmt::format(
-          "--frame K writes one still PNG, not {} clip; for part of a clip use --frames A:B",
-          format == "mp4" ? "an MP4" : "a GIF"));
+          "--frame K writes one still PNG, not a clip; for part of a clip use --frames A:B"));
     }
-    return format == "mp4" ? OutputKind::kMp4 : OutputKind::kGif;
+    return clip ? Output{OutputKind::kClip, *clip} : Output{OutputKind::kMp4};
   }
   if (format == "png") {
     if (is_png_pattern(o.output)) {
@@ -104,17 +109,18 @@ OutputKind output_kind(const RenderOptions& o) {
                         "still.png); for several frames use --frames A:B",
                         o.output));
       }
-      return OutputKind::kPngSequence;
+      return {OutputKind::kPngSequence};
     }
-    if (o.frame) return OutputKind::kPngStill;
+    if (o.frame) return {OutputKind::kPngStill};
     throw UsageError(fmt::format(
         "-o {}: one PNG file holds one frame: add --frame K for a still or --strip N for a "
         "strip, or give a pattern with one %d, %Nd or %0Nd (e.g. out/f_%04d.png) for every frame",
         o.output));
   }
   throw UsageError(fmt::format(
-      "-o {}: cannot tell the output format; expected a name ending in .mp4 or .gif, a PNG "
-      "pattern like out/f_%04d.png, a .png with --frame K or --strip N, or --format mp4|gif|png",
+      "-o {}: cannot tell the output format; expected a name ending in .mp4, .gif, .webm, .mov "
+      "or .webp, a PNG pattern like out/f_%04d.png, a .png with --frame K or --strip N, or "
+      "--format mp4|gif|webm|mov|webp|png",
       o.output));
 }
 
@@ -175,6 +181,8 @@ std::pair<int, int> frame_size(const std::string& text, const Scene& scene, Outp
 
 struct Plan {
   OutputKind kind = OutputKind::kMp4;
+  ClipFormat clip_format = ClipFormat::kGif;  // of OutputKind::kClip
+  bool transparent = false;                   // render.background "transparent": keep alpha
   FrameRange range;
   ClipPlan clip;  // frames to draw, fps, size, backend, anti-aliasing, overlays
   PngSettings png;
@@ -183,7 +191,9 @@ struct Plan {
 
 Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
   Plan plan;
-  plan.kind = output_kind(o);
+  const Output output = output_kind(o);
+  plan.kind = output.kind;
+  plan.clip_format = output.clip;
   const Scene& scene = loaded.scene;
   plan.clip.fps = o.fps.value_or(scene.render.fps);
   const double duration = o.duration.value_or(scene.duration);
@@ -200,7 +210,8 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
         fmt::format("--frame {}: the clip's last frame is {} (duration × fps)", *o.frame, last));
   }
   plan.range = o.frame ? FrameRange{*o.frame, *o.frame} : frame_range(o.frames, last);
-  if (plan.kind == OutputKind::kGif && !gif_fps_is_valid(plan.clip.fps)) {
+  if (plan.kind == OutputKind::kClip && plan.clip_format == ClipFormat::kGif &&
+      !clip_fps_is_valid(ClipFormat::kGif, plan.clip.fps)) {
     throw UsageError(fmt::format(
         "{} {:g}: a GIF plays at most 50 frames per second (its delays are whole centiseconds "
         "and browsers slow delays under 2 cs); use --fps 50 or less",
@@ -239,6 +250,13 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
                      o.png_filter + "\"");
   }
   plan.png.filter = *filter;
+  plan.transparent = has_transparent_background(scene);
+  plan.png.keep_alpha = plan.transparent;
+  if (plan.transparent && plan.kind == OutputKind::kMp4) {
+    throw UsageError(
+        "render.background is \"transparent\" but an MP4 (H.264) has no alpha: write .webm, "
+        ".mov, .webp, .gif or PNG, or give the scene a background colour");
+  }
   if (!mp4_crf_is_valid(o.crf))
     throw UsageError(fmt::format("--crf: expected 0..51, got {}", o.crf));
   if (!mp4_preset_is_valid(o.preset)) {
@@ -281,10 +299,11 @@ int run_render(const RenderOptions& o) {
     if (plan.kind == OutputKind::kMp4) {
       quiet_ffmpeg_logs();
       sink = std::make_unique<Mp4Sink>(o.output, plan.clip.width, plan.clip.height, plan.mp4);
-    } else if (plan.kind == OutputKind::kGif) {
+    } else if (plan.kind == OutputKind::kClip) {
       quiet_ffmpeg_logs();
-      sink = std::make_unique<GifSink>(o.output, plan.clip.width, plan.clip.height,
-                                       GifOptions{plan.clip.fps});
+      sink = std::make_unique<EncodedClipSink>(o.output, plan.clip_format, plan.clip.width,
+                                               plan.clip.height,
+                                               ClipOptions{plan.clip.fps, plan.transparent});
     } else if (plan.kind == OutputKind::kPngSequence) {
       sink = std::make_unique<PngSequenceSink>(o.output, plan.png, o.png_workers);
     } else {
@@ -316,7 +335,9 @@ int run_render(const RenderOptions& o) {
     if (plan.kind == OutputKind::kStrip && !result.interrupted) {
       write_png_file(
           o.output,
-          compose_film_strip(kept, std::max(2, plan.clip.width / 160), {255, 255, 255, 255}),
+          compose_film_strip(kept, std::max(2, plan.clip.width / 160),
+                             plan.transparent ? std::array<std::uint8_t, 4>{0, 0, 0, 0}
+                                              : std::array<std::uint8_t, 4>{255, 255, 255, 255}),
           plan.png);
     } else if (plan.kind == OutputKind::kPngStill && kept.size() == 1) {
       write_png_file(o.output, kept.front(), plan.png);

@@ -70,4 +70,14 @@ std::optional<Overlays> parse_overlays(const std::vector<std::string>& names,
   return overlays;
 }
 
+bool has_transparent_background(const Scene& scene) {
+  return scene.render.background == kTransparentBackground;
+}
+
+Rgba scene_background(const Scene& scene) {
+  if (has_transparent_background(scene)) return Rgba{{0.f, 0.f, 0.f, 0.f}};
+  // The loader accepts only "#rgb" and "#rrggbb" besides "transparent".
+  return parse_hex_color(scene.render.background).value_or(Rgba{});
+}
+
 }  // namespace rugosim::app

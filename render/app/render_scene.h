@@ -24,6 +24,10 @@ std::vector<BodyLook> body_looks(const Scene& scene, const World& world);
 // The explicit camera of the scene's render.camera, or nullopt for "auto".
 std::optional<Camera> scene_camera(const Scene& scene, int width_px, int height_px);
 
+// render.background as the renderer takes it: the colour, or (0, 0, 0, 0) for "transparent".
+Rgba scene_background(const Scene& scene);
+bool has_transparent_background(const Scene& scene);
+
 // The camera that shows every body in every snapshot (their bands included).
 Camera fit_clip_camera(const World& world, const std::vector<FrameSnapshot>& frames, int width_px,
                        int height_px);

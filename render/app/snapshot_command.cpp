@@ -175,6 +175,7 @@ struct Setup {
   ClipPlan plan;
   CompareRule rule;
   std::optional<Metadata> metadata;  // of the goldens there already (also when updating)
+  PngSettings png = kGoldenPng;      // of goldens and actual frames: RGBA when transparent
 };
 
 Setup make_setup(const SnapshotOptions& o, const LoadedScene& loaded) {
@@ -189,6 +190,7 @@ Setup make_setup(const SnapshotOptions& o, const LoadedScene& loaded) {
         o.golden_dir, o.scene_path, o.golden_dir));
   }
   const Scene& scene = loaded.scene;
+  s.png.keep_alpha = has_transparent_background(scene);
   s.plan.fps = scene.render.fps;
   const RunFrames run = run_frames(scene.duration, "world.duration", s.plan.fps, "render.fps",
                                    loaded.world->settings().min_step);
@@ -257,7 +259,7 @@ json outcome_json(const Suite& suite, const FrameOutcome& f) {
 void write_goldens(const Setup& s, const std::vector<Image>& frames, const std::string& renderer) {
   const Suite& suite = s.suite;
   for (std::size_t i = 0; i < frames.size(); ++i) {
-    write_png_file(suite.golden(s.plan.frames[i]).string(), frames[i], kGoldenPng);
+    write_png_file(suite.golden(s.plan.frames[i]).string(), frames[i], s.png);
     fs::remove(suite.actual(s.plan.frames[i]));
     fs::remove(suite.diff(s.plan.frames[i]));
   }
@@ -304,7 +306,7 @@ FrameOutcome compare_frame(const SnapshotOptions& o, const Setup& s, std::size_t
   f.frame = frame;
   if (!expected) {
     f.status = "missing";
-    write_png_file(suite.actual(frame).string(), image, kGoldenPng);
+    write_png_file(suite.actual(frame).string(), image, s.png);
     report += fmt::format(
         "frame {}: no golden {}; create it with: rugosim snapshot {} --golden {} --update\n", frame,
         suite.golden(frame).string(), o.scene_path, o.golden_dir);
@@ -313,7 +315,7 @@ FrameOutcome compare_frame(const SnapshotOptions& o, const Setup& s, std::size_t
   f.result = compare_images(*expected, image, s.rule);
   f.status = f.result.identical ? "identical" : f.result.passed ? "passed" : "failed";
   if (!f.result.passed) {
-    write_png_file(suite.actual(frame).string(), image, kGoldenPng);
+    write_png_file(suite.actual(frame).string(), image, s.png);
     write_png_file(suite.diff(frame).string(), difference_image(*expected, image, s.rule),
                    kGoldenPng);
   }

@@ -43,8 +43,9 @@ struct OutlineVertex {
   float lambda;  // λ / largest λ of the scene
 };
 
-// The colour whose XOR with the background, byte by byte, is `fill`. Alpha 0: XOR leaves the
-// cleared alpha of 1 as it is.
+// The colour whose XOR with the background, byte by byte, is `fill`, opaque: over an opaque
+// background the key's alpha is 0 (XOR leaves the cleared alpha of 1), over a transparent one
+// it is 1.
 Rgba xor_key(const Rgba& background, const Rgba& fill) {
   Rgba key;
   for (std::size_t c = 0; c < 3; ++c) {
@@ -52,8 +53,24 @@ Rgba xor_key(const Rgba& background, const Rgba& fill) {
     const auto b = static_cast<unsigned>(std::lround(fill.channels[c] * 255.f));
     key.channels[c] = static_cast<float>(a ^ b) / 255.f;
   }
-  key.channels[3] = 0.f;
+  const auto alpha = static_cast<unsigned>(std::lround(background.channels[3] * 255.f));
+  key.channels[3] = static_cast<float>(alpha ^ 255u) / 255.f;
   return key;
+}
+
+// Over a transparent background the framebuffer holds premultiplied colour: the outlines and
+// overlays blend (source alpha, one minus source alpha) onto (0, 0, 0, 0), and the fills are
+// opaque. Images carry straight alpha (as PNG, WebM and ProRes do): divide it out.
+void unpremultiply(Image& image) {
+  for (std::size_t i = 0; i + 3 < image.rgba.size(); i += 4) {
+    const unsigned alpha = image.rgba[i + 3];
+    if (alpha == 255) continue;
+    for (std::size_t c = 0; c < 3; ++c) {
+      image.rgba[i + c] = alpha == 0 ? 0
+                                     : static_cast<std::uint8_t>(std::min(
+                                           255u, (image.rgba[i + c] * 255u + alpha / 2) / alpha));
+    }
+  }
 }
 
 // Unit outward normal of the edge a → b of a counter-clockwise outline.
@@ -514,7 +531,7 @@ void SceneRenderer::draw_pass(const FrameSnapshot& frame, const PixelRect* rect)
   // 1. Background by a clear, then every fill in one draw by XOR.
   gl_.BindFramebuffer(GL_FRAMEBUFFER, msaa ? g.msaa_framebuffer : context_.framebuffer());
   const auto& bg = settings_.background.channels;
-  const GLfloat background[4] = {bg[0], bg[1], bg[2], 1.f};
+  const GLfloat background[4] = {bg[0], bg[1], bg[2], bg[3]};
   gl_.ClearBufferfv(GL_COLOR, 0, background);
   gl_.Enable(GL_COLOR_LOGIC_OP);
   gl_.LogicOp(GL_XOR);
@@ -582,6 +599,7 @@ void SceneRenderer::read(Image& image) const {
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
   // The frame was drawn upside down, so GL's bottom-up rows are the image's top-down rows.
   gl_.ReadPixels(0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  if (settings_.background.channels[3] < 1.f) unpremultiply(image);
   image.picture = picture_;
 }
 

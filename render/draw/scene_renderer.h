@@ -54,8 +54,8 @@ struct BodyLook {
 };
 
 struct RenderSettings {
-  Camera camera;  // its pixel size sets the detail; width_px × height_px must be the context's
-  Rgba background;
+  Camera camera;    // its pixel size sets the detail; width_px × height_px must be the context's
+  Rgba background;  // opaque, or (0, 0, 0, 0): none (images then carry straight alpha)
   AntiAliasing anti_aliasing = AntiAliasing::kShader;
   Overlays overlays;
   double outline_px = 1.5;  // px at 720 lines; scaled with the frame's height

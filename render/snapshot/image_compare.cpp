@@ -41,8 +41,10 @@ int abs_diff(std::uint8_t a, std::uint8_t b) {
 }
 
 // The largest difference in R, G and B of the pixels at `a` and `b`.
+// Alpha too: frames of a transparent background differ there as well (opaque frames have 255).
 int channel_diff(const std::uint8_t* a, const std::uint8_t* b) {
-  return std::max(abs_diff(a[0], b[0]), std::max(abs_diff(a[1], b[1]), abs_diff(a[2], b[2])));
+  return std::max(std::max(abs_diff(a[0], b[0]), abs_diff(a[1], b[1])),
+                  std::max(abs_diff(a[2], b[2]), abs_diff(a[3], b[3])));
 }
 
 // Pixels above this are marked red and bounded by the box: every difference under an exact

@@ -12,7 +12,7 @@ namespace rugosim {
 
 struct CompareRule {
   bool exact = false;        // any difference fails
-  int threshold = 16;        // a pixel differs when some channel (R, G, B; alpha ignored) differs
+  int threshold = 16;        // a pixel differs when some channel (R, G, B, A) differs
                              // by more than this (0..255)
   double max_share = 0.001;  // the comparison fails when more than this share of pixels differ
                              // (0..1)

@@ -66,6 +66,7 @@ std::vector<NumericOption> table() {
   rows.push_back({"render", "--fps", {}, "1e309"});
   rows.push_back({"render", "--crf", {"0"}, kPast64Bits});
   rows.push_back({"render", "--strip", {}, kPast64Bits});
+  rows.push_back({"render", "--frame", {"0"}, kPast64Bits});
   rows.push_back({"render", "--gl-threads", {"0"}, kPast64Bits});
   rows.push_back({"render", "--png-workers", {}, kPast64Bits});
   rows.push_back({"render", "--png-level", {"0"}, kPast64Bits});
@@ -87,13 +88,16 @@ class NumberOptions : public ::testing::Test {
       line += " --stats " + output().string();
     } else if (o.command == "render") {
       if (!sets_duration) line += " --duration 0.05";
-      line += " --size 64x64 -y -o " + output().string();
+      line += " --size 64x64 -y -o " + output(o.name).string();
     } else {
       line += " --size 64x64 --update --golden " + (dir_ / "goldens").string();
     }
     return line + " " + o.name + " '" + value + "'";
   }
-  fs::path output() const { return dir_ / "out.mp4"; }
+  // A clip, or for --frame a still.
+  fs::path output(const std::string& option = "") const {
+    return dir_ / (option == "--frame" ? "still.png" : "out.mp4");
+  }
 
   rugosim::testing::ScratchDir scratch_{"numbers"};
   const fs::path& dir_ = scratch_.path();
@@ -139,7 +143,7 @@ TEST_F(NumberOptions, EveryBadNumberExits2WithAMessageAndWritesNothing) {
       const std::string value = v == "overflow" ? o.overflow : v;
       const std::string line = command_line(o, value);
       fs::remove_all(dir_ / "goldens");
-      fs::remove(output());
+      fs::remove(output(o.name));
       const CommandRun r = run_command_line(line, dir_ / "stderr.txt");
       SCOPED_TRACE(line + "\n" + r.stderr_text);
       if (o.legitimate.count(v) > 0) {
@@ -161,7 +165,7 @@ TEST_F(NumberOptions, EveryBadNumberExits2WithAMessageAndWritesNothing) {
         without_value.erase(at, value.size());
       EXPECT_LT(longest_digit_run(without_value), 20u);
       EXPECT_EQ(r.stderr_text.find("Could not convert"), std::string::npos);
-      EXPECT_FALSE(fs::exists(output()));
+      EXPECT_FALSE(fs::exists(output(o.name)));
       EXPECT_FALSE(fs::exists(dir_ / "goldens"));
     }
   }

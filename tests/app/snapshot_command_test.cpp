@@ -270,6 +270,27 @@ TEST_F(SnapshotCommand, UpdateThenRerunPasses) {
   EXPECT_EQ(listing(golden_).size(), 5u);
 }
 
+// A transparent background: the goldens keep alpha (RGBA), a rerun is identical, and a golden
+// whose background was made opaque fails (alpha is compared like the colours).
+TEST_F(SnapshotCommand, TransparentGoldensKeepAlphaAndItIsCompared) {
+  std::string text = read_text(figure12a());
+  const std::string from = R"("overlays": [])";
+  ASSERT_NE(text.find(from), std::string::npos);
+  text.replace(text.find(from), from.size(), R"("overlays": [], "background": "transparent")");
+  const fs::path scene = dir_ / "figure12a.json";
+  write_text(scene, text);
+  update(scene.string(), {"--size", "160x90", "--frames", "150"});
+  Image image = read_png_file(golden(150).string());
+  EXPECT_EQ(image.rgba[3], 0) << "the corner is background";
+  EXPECT_TRUE(contains(snap(scene.string(), {}).err, "frame 150: identical"));
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4)
+    image.rgba[i] = 255;
+  write_png_file(golden(150).string(), image, PngSettings{});
+  const Outcome r = snap(scene.string(), {});
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_TRUE(contains(r.err, "frame 150: failed")) << r.err;
+}
+
 // One channel of one pixel off by 100: 1 of 14 400 pixels (0.007 %) fails the threshold, within
 // the default share of 0.1 %; --exact fails it and draws it.
 TEST_F(SnapshotCommand, OnePixelChangePassesTheDefaultRuleAndFailsExact) {

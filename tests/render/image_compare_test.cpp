@@ -172,19 +172,19 @@ TEST(ImageCompare, DifferenceEqualToThresholdIsNotFailing) {
   }
 }
 
-TEST(ImageCompare, AlphaDifferencesAreIgnored) {
+// Frames of a transparent background carry alpha: it is compared like the colours.
+TEST(ImageCompare, AlphaDifferencesCountLikeColours) {
   const Image golden = random_frame(64, 48, 7);
   Image actual = golden;
-  for (int y = 0; y < actual.height; ++y) {
-    for (int x = 0; x < actual.width; ++x)
-      actual.pixel(x, y)[3] = static_cast<std::uint8_t>(~golden.pixel(x, y)[3]);
-  }
+  std::uint8_t* p = actual.pixel(10, 20);
+  p[3] = static_cast<std::uint8_t>(p[3] >= 128 ? p[3] - 100 : p[3] + 100);
   CompareRule exact;
   exact.exact = true;
   const CompareResult r = compare_images(golden, actual, exact);
-  EXPECT_TRUE(r.identical);
-  EXPECT_TRUE(r.passed);
-  EXPECT_EQ(r.differing_pixels, 0U);
+  EXPECT_FALSE(r.identical);
+  EXPECT_FALSE(r.passed);
+  EXPECT_EQ(r.differing_pixels, 1U);
+  EXPECT_EQ(r.worst, 100);
 }
 
 TEST(ImageCompare, SizeMismatchFailsAndDescribeNamesBothSizes) {

@@ -59,7 +59,11 @@ class Prober {
     const int stream_index = av_find_best_stream(input, AVMEDIA_TYPE_VIDEO, -1, -1, nullptr, 0);
     check(stream_index, "finding a video stream");
     const AVStream* stream = input->streams[stream_index];
-    const AVCodec* decoder = avcodec_find_decoder(stream->codecpar->codec_id);
+    // VP9's alpha travels beside the colour, and FFmpeg's own VP9 decoder drops it: libvpx's
+    // keeps it.
+    const AVCodec* decoder = stream->codecpar->codec_id == AV_CODEC_ID_VP9
+                                 ? avcodec_find_decoder_by_name("libvpx-vp9")
+                                 : avcodec_find_decoder(stream->codecpar->codec_id);
     if (decoder == nullptr) fail("no decoder for its video");
     codec_.reset(avcodec_alloc_context3(decoder));
     frame_.reset(av_frame_alloc());

@@ -31,7 +31,8 @@ enum class FileEnd {
 // Throws std::runtime_error naming the file when it cannot be opened, has no video stream, or
 // its video cannot be decoded (with FileEnd::may_be_cut: a sample wholly inside the file that
 // does not decode, or a read error before the end of the file). Pixels are converted to RGBA with
-// the matrix and range the stream is tagged with (BT.601 when untagged).
+// the matrix and range the stream is tagged with (BT.601 when untagged), alpha kept where the
+// stream has it (VP9 is decoded by libvpx-vp9 for that).
 VideoProbe probe_video(const std::string& path, bool decode_pixels = false,
                        FileEnd end = FileEnd::complete);
 
