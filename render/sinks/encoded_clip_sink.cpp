@@ -263,6 +263,7 @@ EncodedClipSink::EncodedClipSink(std::string path, ClipFormat format, int width,
   c->sample_aspect_ratio = AVRational{1, 1};
   c->time_base = time_base;
   c->framerate = av_d2q(options.fps, 100000);
+  c->thread_count = 0;  // the encoder's own choice from the cores, as the ffmpeg command's
   if (spec.yuv) {
     c->color_range = AVCOL_RANGE_MPEG;
     c->color_primaries = AVCOL_PRI_BT709;
