@@ -14,6 +14,8 @@ packages=(
   # renderer: off-screen OpenGL, PNG, MP4 (H.264 through libx264)
   libosmesa6-dev libegl-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri libpng-dev
   libavcodec-dev libavformat-dev libavfilter-dev libavutil-dev libswscale-dev
+  # text in frames: FreeType and the DejaVu fonts
+  libfreetype-dev fonts-dejavu-core
   # tests and benchmarks (libwebp-dev: the tests decode animated WebP with libwebp's demux API)
   libgtest-dev libgmock-dev libbenchmark-dev libwebp-dev
   # the pile benchmark's competitor

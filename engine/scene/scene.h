@@ -73,6 +73,23 @@ struct CameraSpec {
 // WebM, MOV and WebP keep it; an MP4 cannot.
 inline constexpr const char* kTransparentBackground = "transparent";
 
+// A corner of the frame, for the clock and the scale bar: "top-left", "top-right",
+// "bottom-left", "bottom-right".
+inline constexpr const char* kCorners[] = {"top-left", "top-right", "bottom-left", "bottom-right"};
+
+// render.clock: the frame's time, written with `format` (one printf conversion %f or %.Nf).
+struct ClockSpec {
+  std::string corner = "top-left";
+  std::string format = "t = %.2f s";
+};
+
+// render.scale_bar: a bar of `length` m (0: the longest of 1, 2 or 5 × 10^k m within a fifth of
+// the frame's width), labelled.
+struct ScaleBarSpec {
+  std::string corner = "bottom-left";
+  double length = 0.0;  // m
+};
+
 struct RenderSpec {
   int width = SceneDefaults::kWidth;
   int height = SceneDefaults::kHeight;
@@ -80,6 +97,10 @@ struct RenderSpec {
   CameraSpec camera;
   std::string background = SceneDefaults::kBackground;  // "#rrggbb", or kTransparentBackground
   std::vector<std::string> overlays;
+  std::string title;    // drawn at the top, centred ("" for none)
+  std::string caption;  // drawn at the bottom, centred ("" for none)
+  std::optional<ClockSpec> clock;
+  std::optional<ScaleBarSpec> scale_bar;
 };
 
 // world.accuracy: a preset ("draft", "normal", "precise") and knobs that override it, by the

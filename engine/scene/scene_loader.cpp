@@ -1,6 +1,7 @@
 #include "engine/scene/scene_loader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -284,9 +285,94 @@ void read_body(Reader& r, const json& v, const std::string& path, const Scene& s
   if (v.contains("color")) read_colour(r, v["color"], child(path, "color"), body.color);
 }
 
+// One of kCorners.
+void read_corner(Reader& r, const json& v, const std::string& path, std::string& corner) {
+  r.string(v, path, corner);
+  if (!v.is_string()) return;
+  for (const char* known : kCorners) {
+    if (corner == known) return;
+  }
+  r.error(path, "expected \"top-left\", \"top-right\", \"bottom-left\" or \"bottom-right\", got " +
+                    shown(v));
+}
+
+// A clock format: text with exactly one conversion %f or %.Nf (N a digit), "%%" for a percent
+// sign. Anything else (%s, %d, two numbers) would let printf read what is not there.
+bool is_clock_format(const std::string& format) {
+  int conversions = 0;
+  for (std::size_t i = 0; i < format.size(); ++i) {
+    if (format[i] != '%') continue;
+    if (i + 1 < format.size() && format[i + 1] == '%') {
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    if (j + 1 < format.size() && format[j] == '.' &&
+        std::isdigit(static_cast<unsigned char>(format[j + 1]))) {
+      j += 2;
+    }
+    if (j >= format.size() || format[j] != 'f') return false;
+    ++conversions;
+    i = j;
+  }
+  return conversions == 1 && format.size() <= 200;
+}
+
+// render.clock: true (the defaults), false (none), or {"corner", "format"}.
+void read_clock(Reader& r, const json& v, const std::string& path, std::optional<ClockSpec>& out) {
+  if (v.is_boolean()) {
+    if (v.get<bool>()) out = ClockSpec{};
+    return;
+  }
+  if (!v.is_object()) {
+    r.error(path, "expected true, false or {\"corner\": ..., \"format\": \"t = %.2f s\"}, got " +
+                      shown(v));
+    return;
+  }
+  r.check_keys(v, path, {"corner", "format"});
+  ClockSpec clock;
+  if (v.contains("corner")) read_corner(r, v["corner"], child(path, "corner"), clock.corner);
+  if (v.contains("format")) {
+    r.string(v["format"], child(path, "format"), clock.format);
+    if (v["format"].is_string() && !is_clock_format(clock.format)) {
+      r.error(child(path, "format"),
+              "expected text with one %f or %.Nf for the time in seconds (e.g. \"t = %.2f s\"; "
+              "%% for a percent sign), got " +
+                  shown(v["format"]));
+    }
+  }
+  out = clock;
+}
+
+// render.scale_bar: true (the defaults), false (none), or {"corner", "length"}.
+void read_scale_bar(Reader& r, const json& v, const std::string& path,
+                    std::optional<ScaleBarSpec>& out) {
+  if (v.is_boolean()) {
+    if (v.get<bool>()) out = ScaleBarSpec{};
+    return;
+  }
+  if (!v.is_object()) {
+    r.error(path, "expected true, false or {\"corner\": ..., \"length\": metres}, got " + shown(v));
+    return;
+  }
+  r.check_keys(v, path, {"corner", "length"});
+  ScaleBarSpec bar;
+  if (v.contains("corner")) read_corner(r, v["corner"], child(path, "corner"), bar.corner);
+  if (v.contains("length")) r.positive(v["length"], child(path, "length"), bar.length, "m");
+  out = bar;
+}
+
 void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& render) {
   if (!r.is_object(v, path)) return;
-  r.check_keys(v, path, {"size", "fps", "camera", "background", "overlays"});
+  r.check_keys(v, path,
+               {"size", "fps", "camera", "background", "overlays", "title", "caption", "clock",
+                "scale_bar"});
+  if (v.contains("title")) r.string(v["title"], child(path, "title"), render.title);
+  if (v.contains("caption")) r.string(v["caption"], child(path, "caption"), render.caption);
+  if (v.contains("clock")) read_clock(r, v["clock"], child(path, "clock"), render.clock);
+  if (v.contains("scale_bar")) {
+    read_scale_bar(r, v["scale_bar"], child(path, "scale_bar"), render.scale_bar);
+  }
   if (v.contains("size")) {
     const json& size = v["size"];
     const std::string at = child(path, "size");

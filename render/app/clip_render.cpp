@@ -15,16 +15,22 @@ namespace {
 class ContextRenderer final : public FrameRenderer {
  public:
   ContextRenderer(std::unique_ptr<GlContext> context, std::vector<BodyLook> looks,
-                  const RenderSettings& settings)
-      : context_(std::move(context)), renderer_(*context_, std::move(looks), settings) {}
+                  const RenderSettings& settings, FrameText text)
+      : context_(std::move(context)),
+        renderer_(*context_, std::move(looks), settings),
+        metres_per_pixel_(settings.camera.pixel_size()),
+        text_(std::move(text)) {}
   void render(const FrameSnapshot& frame, Image& image) override {
     renderer_.draw(frame);
     renderer_.read(image);
+    text_.paint(image, frame.time, metres_per_pixel_);
   }
 
  private:
   std::unique_ptr<GlContext> context_;
   SceneRenderer renderer_;
+  double metres_per_pixel_;
+  FrameTextPainter text_;  // draws nothing (and opens no font) without text
 };
 
 // The snapshots of the clip, made on the simulation thread. With an explicit camera each frame
@@ -138,7 +144,8 @@ PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
     if (!camera) return nullptr;  // interrupted before the clip was simulated
     RenderSettings with_camera = settings;
     with_camera.camera = *camera;
-    return std::make_unique<ContextRenderer>(std::move(context), looks, with_camera);
+    return std::make_unique<ContextRenderer>(std::move(context), looks, with_camera,
+                                             frame_text(loaded.scene));
   };
   stages.consume = consume;
   stages.interrupted = interrupted;

@@ -80,4 +80,22 @@ Rgba scene_background(const Scene& scene) {
   return parse_hex_color(scene.render.background).value_or(Rgba{});
 }
 
+FrameText frame_text(const Scene& scene) {
+  const RenderSpec& r = scene.render;
+  FrameText text;
+  text.title = r.title;
+  text.caption = r.caption;
+  if (r.clock) {
+    text.clock = true;
+    text.clock_corner = parse_corner(r.clock->corner).value_or(Corner::kTopLeft);
+    text.clock_format = r.clock->format;
+  }
+  if (r.scale_bar) {
+    text.scale_bar = true;
+    text.scale_bar_corner = parse_corner(r.scale_bar->corner).value_or(Corner::kBottomLeft);
+    text.scale_bar_length = r.scale_bar->length;
+  }
+  return text;
+}
+
 }  // namespace rugosim::app

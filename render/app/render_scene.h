@@ -14,6 +14,7 @@
 #include "render/draw/camera.h"
 #include "render/draw/overlay_geometry.h"
 #include "render/draw/scene_renderer.h"
+#include "render/text/frame_text.h"
 
 namespace rugosim::app {
 
@@ -26,6 +27,9 @@ std::optional<Camera> scene_camera(const Scene& scene, int width_px, int height_
 
 // render.background as the renderer takes it: the colour, or (0, 0, 0, 0) for "transparent".
 Rgba scene_background(const Scene& scene);
+
+// render.title, caption, clock and scale_bar as the text painter takes them.
+FrameText frame_text(const Scene& scene);
 bool has_transparent_background(const Scene& scene);
 
 // The camera that shows every body in every snapshot (their bands included).

@@ -171,13 +171,16 @@ class RenderCommand : public ::testing::Test {
     return path;
   }
 
-  // Renders one frame of `scene` to a PNG (size 320x180) with extra options; empty on failure.
+  // Renders one frame of `scene` to a PNG (size 320x180 unless `extra` has --size) with extra
+  // options; empty on failure.
   Image frame(const std::string& scene, std::size_t index, const std::vector<std::string>& extra) {
     const fs::path out = dir_ / "out" / std::string("one_").append(std::to_string(++frames_));
     fs::create_directories(out);
     const std::string range = std::to_string(index).append(":").append(std::to_string(index));
-    std::vector<std::string> args = {
-        scene, "-o", (out / "f_%d.png").string(), "--frames", range, "--size", "320x180"};
+    std::vector<std::string> args = {scene, "-o", (out / "f_%d.png").string(), "--frames", range};
+    if (std::find(extra.begin(), extra.end(), "--size") == extra.end()) {
+      args.insert(args.end(), {"--size", "320x180"});
+    }
     args.insert(args.end(), extra.begin(), extra.end());
     const Outcome r = run(args);
     EXPECT_EQ(r.code, 0) << r.err;

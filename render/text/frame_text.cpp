@@ -1,0 +1,157 @@
+#include "render/text/frame_text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <utility>
+
+namespace rugosim {
+namespace {
+
+void fill_rect(Image& image, int x0, int y0, int x1, int y1,
+               const std::array<std::uint8_t, 4>& colour) {
+  const unsigned a = colour[3];
+  for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y) {
+    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) {
+      std::uint8_t* p = image.pixel(x, y);
+      const unsigned below = (p[3] * (255u - a) + 127u) / 255u;
+      const unsigned out_a = a + below;
+      for (int c = 0; c < 3; ++c) {
+        p[c] =
+            out_a == 0
+                ? 0
+                : static_cast<std::uint8_t>(
+                      (colour[static_cast<std::size_t>(c)] * a + p[c] * below + out_a / 2) / out_a);
+      }
+      p[3] = static_cast<std::uint8_t>(out_a);
+    }
+  }
+  image.picture = 0;
+}
+
+}  // namespace
+
+std::optional<Corner> parse_corner(const std::string& name) {
+  if (name == "top-left") return Corner::kTopLeft;
+  if (name == "top-right") return Corner::kTopRight;
+  if (name == "bottom-left") return Corner::kBottomLeft;
+  if (name == "bottom-right") return Corner::kBottomRight;
+  return std::nullopt;
+}
+
+std::string clock_text(const std::string& format, double time) {
+  char text[256];
+  // The format holds exactly one %f or %.Nf (checked when the scene is read).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wformat-nonliteral"
+  std::snprintf(text, sizeof text, format.c_str(), time);
+#pragma GCC diagnostic pop
+  return text;
+}
+
+double scale_bar_length(double frame_width) {
+  const double most = frame_width / 5.0;
+  double decade = std::pow(10.0, std::floor(std::log10(most)));
+  double best = decade;
+  for (const double step : {1.0, 2.0, 5.0, 10.0}) {
+    if (step * decade <= most * (1.0 + 1e-9)) best = step * decade;
+  }
+  return best;
+}
+
+std::string length_label(double metres) {
+  struct Unit {
+    double size;
+    const char* name;
+  };
+  static constexpr Unit kUnits[] = {
+      {1e3, "km"}, {1.0, "m"}, {1e-2, "cm"}, {1e-3, "mm"}, {1e-6, "µm"}};
+  for (const Unit& u : kUnits) {
+    if (metres >= u.size * (1.0 - 1e-9)) {
+      char text[64];
+      std::snprintf(text, sizeof text, "%g %s", metres / u.size, u.name);
+      return text;
+    }
+  }
+  char text[64];
+  std::snprintf(text, sizeof text, "%g m", metres);
+  return text;
+}
+
+TextLayout text_layout(int height) {
+  const auto px = [&](double divisor) {
+    return std::max(8, static_cast<int>(std::lround(height / divisor)));
+  };
+  TextLayout t;
+  t.margin = std::max(2, static_cast<int>(std::lround(height / 40.0)));
+  t.title_px = px(18.0);
+  t.caption_px = px(30.0);
+  t.clock_px = px(28.0);
+  t.bar_thickness = std::max(2, static_cast<int>(std::lround(height / 180.0)));
+  return t;
+}
+
+FrameTextPainter::FrameTextPainter(FrameText text) : text_(std::move(text)) {
+  if (text_.any()) font_ = std::make_unique<Font>(default_font_path());
+}
+
+std::array<int, 2> FrameTextPainter::corner_origin(const std::string& text, int px, Corner corner,
+                                                   int width, int height) {
+  const TextLayout layout = text_layout(height);
+  const TextExtent e = font_->measure(text, px);
+  const bool left = corner == Corner::kTopLeft || corner == Corner::kBottomLeft;
+  const bool top = corner == Corner::kTopLeft || corner == Corner::kTopRight;
+  const int x = left ? layout.margin : width - layout.margin - e.width;
+  const int baseline = top ? layout.margin + e.ascent : height - layout.margin - e.descent;
+  return {x, baseline};
+}
+
+std::array<int, 2> FrameTextPainter::clock_origin(const std::string& text, int width, int height) {
+  return corner_origin(text, text_layout(height).clock_px, text_.clock_corner, width, height);
+}
+
+void FrameTextPainter::paint(Image& image, double time, double metres_per_pixel) {
+  if (!font_) return;
+  const int w = image.width;
+  const int h = image.height;
+  const TextLayout layout = text_layout(h);
+  const auto centred = [&](const std::string& s, int px, bool top) {
+    const TextExtent e = font_->measure(s, px);
+    const int baseline = top ? layout.margin + e.ascent : h - layout.margin - e.descent;
+    font_->draw(image, s, px, (w - e.width) / 2, baseline, text_.colour);
+  };
+  if (!text_.title.empty()) centred(text_.title, layout.title_px, true);
+  if (!text_.caption.empty()) centred(text_.caption, layout.caption_px, false);
+  if (text_.clock) {
+    const std::string s = clock_text(text_.clock_format, time);
+    const auto [x, baseline] = clock_origin(s, w, h);
+    font_->draw(image, s, layout.clock_px, x, baseline, text_.colour);
+  }
+  if (text_.scale_bar && metres_per_pixel > 0.0) {
+    const double metres = text_.scale_bar_length > 0.0 ? text_.scale_bar_length
+                                                       : scale_bar_length(w * metres_per_pixel);
+    const int length = std::max(1, static_cast<int>(std::lround(metres / metres_per_pixel)));
+    const bool left =
+        text_.scale_bar_corner == Corner::kTopLeft || text_.scale_bar_corner == Corner::kBottomLeft;
+    const bool top =
+        text_.scale_bar_corner == Corner::kTopLeft || text_.scale_bar_corner == Corner::kTopRight;
+    const std::string label = length_label(metres);
+    const TextExtent e = font_->measure(label, layout.clock_px);
+    const int x0 = left ? layout.margin : w - layout.margin - length;
+    // The label sits above the bar, centred on it; at the top the bar goes under the label.
+    const int gap = layout.bar_thickness;
+    int bar_top = 0;
+    int baseline = 0;
+    if (top) {
+      baseline = layout.margin + e.ascent;
+      bar_top = baseline + e.descent + gap;
+    } else {
+      bar_top = h - layout.margin - layout.bar_thickness;
+      baseline = bar_top - gap - e.descent;
+    }
+    fill_rect(image, x0, bar_top, x0 + length, bar_top + layout.bar_thickness, text_.colour);
+    font_->draw(image, label, layout.clock_px, x0 + (length - e.width) / 2, baseline, text_.colour);
+  }
+}
+
+}  // namespace rugosim
