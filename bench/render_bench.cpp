@@ -95,7 +95,7 @@ const Clip& clip() {
 RenderSettings settings_for(const Clip& c, int width, int height, AntiAliasing aa) {
   RenderSettings s;
   s.camera = app::fit_clip_camera(*c.world, c.frames, width, height);
-  s.background = *parse_hex_color(c.scene.render.background);
+  s.background = app::scene_background(c.scene);
   s.anti_aliasing = aa;
   return s;
 }

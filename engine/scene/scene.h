@@ -22,11 +22,12 @@ struct SceneDefaults {
   static constexpr double kQ = 0.9;               // λ = q·σ
   static constexpr double kFrictionGain = 100.0;  // 1/m
   static constexpr double kBlobIrregularity = 0.4;
-  static constexpr std::size_t kSegments = 32;  // for generated shapes without "segments"
-  static constexpr int kWidth = 1280;           // px
-  static constexpr int kHeight = 720;           // px
-  static constexpr double kFps = 30.0;          // frames per second
-  static constexpr const char* kBackground = "#f4f1ea";
+  static constexpr std::size_t kSegments = 32;    // for generated shapes without "segments"
+  static constexpr int kWidth = 1280;             // px
+  static constexpr int kHeight = 720;             // px
+  static constexpr double kFps = 30.0;            // frames per second
+  static constexpr const char* kBackground = "";  // the theme's ("paper": "#f4f1ea")
+  static constexpr const char* kTheme = "paper";
   static constexpr const char* kAccuracy = "normal";
 };
 
@@ -95,7 +96,11 @@ struct RenderSpec {
   int height = SceneDefaults::kHeight;
   double fps = SceneDefaults::kFps;
   CameraSpec camera;
-  std::string background = SceneDefaults::kBackground;  // "#rrggbb", or kTransparentBackground
+  std::string theme = SceneDefaults::kTheme;  // "paper", "dark" or "print"
+  // "#rrggbb", kTransparentBackground, or "" for the theme's.
+  std::string background = SceneDefaults::kBackground;
+  std::string outline_color;   // "#rrggbb" for every outline; "" for the theme's
+  double outline_width = 0.0;  // px at 720 lines (scaled with the frame); 0 for 1.5
   std::vector<std::string> overlays;
   std::string title;    // drawn at the top, centred ("" for none)
   std::string caption;  // drawn at the bottom, centred ("" for none)

@@ -366,7 +366,29 @@ void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& 
   if (!r.is_object(v, path)) return;
   r.check_keys(v, path,
                {"size", "fps", "camera", "background", "overlays", "title", "caption", "clock",
-                "scale_bar"});
+                "scale_bar", "theme", "outline"});
+  if (v.contains("theme")) {
+    r.string(v["theme"], child(path, "theme"), render.theme);
+    if (v["theme"].is_string() && render.theme != "paper" && render.theme != "dark" &&
+        render.theme != "print") {
+      r.error(child(path, "theme"),
+              "expected \"paper\", \"dark\" or \"print\", got " + shown(v["theme"]));
+    }
+  }
+  if (v.contains("outline")) {
+    const json& outline = v["outline"];
+    const std::string at = child(path, "outline");
+    if (r.is_object(outline, at)) {
+      r.check_keys(outline, at, {"color", "width"});
+      if (outline.contains("color")) {
+        read_colour(r, outline["color"], child(at, "color"), render.outline_color);
+      }
+      if (outline.contains("width")) {
+        r.ranged(outline["width"], child(at, "width"), render.outline_width, 0.0, true, 100.0,
+                 false, "a number in (0, 100] (px at 720 lines)");
+      }
+    }
+  }
   if (v.contains("title")) r.string(v["title"], child(path, "title"), render.title);
   if (v.contains("caption")) r.string(v["caption"], child(path, "caption"), render.caption);
   if (v.contains("clock")) read_clock(r, v["clock"], child(path, "clock"), render.clock);

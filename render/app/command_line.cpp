@@ -92,6 +92,11 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
                    "one still: frame K (0 to duration × fps) as one PNG")
       ->check(number_in({0, false, 1e9, false, true, "frame"}))
       ->type_name("K");
+  c.render
+      ->add_option("--camera", c.render_options.camera,
+                   "auto, or CX,CY,HEIGHT in metres: the view's centre and height (default: "
+                   "render.camera)")
+      ->type_name("C");
   c.render->add_option("--size", c.render_options.size, "frame size (default: render.size)")
       ->type_name("WxH");
   c.render->add_option("--fps", c.render_fps, "frames per second (default: render.fps)")

@@ -16,6 +16,7 @@
 #include "render/app/commands.h"
 #include "render/app/crossing_report.h"
 #include "render/app/frame_memory.h"
+#include "render/app/number_option.h"
 #include "render/app/progress.h"
 #include "render/app/render_scene.h"
 #include "render/app/run_length.h"
@@ -122,6 +123,32 @@ Output output_kind(const RenderOptions& o) {
       "or .webp, a PNG pattern like out/f_%04d.png, a .png with --frame K or --strip N, or "
       "--format mp4|gif|webm|mov|webp|png",
       o.output));
+}
+
+// --camera: "auto", or "CX,CY,HEIGHT" in metres (the scene's render.camera keys).
+CameraSpec camera_option(const std::string& text) {
+  CameraSpec camera;
+  if (text == "auto") return camera;
+  std::vector<double> numbers;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    const std::optional<double> x = parse_number(text.substr(start, comma - start), false);
+    if (!x) break;
+    numbers.push_back(*x);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (numbers.size() != 3 || !(numbers[2] > 0.0)) {
+    throw UsageError(
+        fmt::format("--camera: expected auto or CX,CY,HEIGHT in metres (HEIGHT > 0, e.g. "
+                    "0,1.1,2.6), got \"{}\"",
+                    text));
+  }
+  camera.automatic = false;
+  camera.center = Vec2(numbers[0], numbers[1]);
+  camera.height = numbers[2];
+  return camera;
 }
 
 // Regular files are not overwritten without -y (for a sequence: none of its frames' files);
@@ -285,6 +312,7 @@ int run_render(const RenderOptions& o) {
   if (!loaded) return kExitUsage;
   Plan plan;
   try {
+    if (!o.camera.empty()) loaded->scene.render.camera = camera_option(o.camera);
     plan = make_plan(o, *loaded);
   } catch (const UsageError& e) {
     fmt::print(stderr, "error: {}\n", e.what());

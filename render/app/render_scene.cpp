@@ -1,5 +1,7 @@
 #include "render/app/render_scene.h"
 
+#include <cmath>
+
 #include "engine/core/random.h"
 #include "render/draw/palette.h"
 
@@ -23,10 +25,13 @@ std::vector<BodyLook> body_looks(const Scene& scene, const World& world) {
     const BodySpec* spec = i < scene.bodies.size() ? &scene.bodies[i] : nullptr;
     std::optional<Rgba> fill;
     if (spec != nullptr && !spec->color.empty()) fill = parse_hex_color(spec->color);
-    if (!fill) fill = default_body_colour(moving, body.fixed());
+    const Theme theme = scene_theme(scene);
+    if (!fill) fill = default_body_colour(moving, body.fixed(), theme);
     if (!body.fixed()) ++moving;
+    const std::optional<Rgba> outline = parse_hex_color(scene.render.outline_color);
     looks.push_back(BodyLook{body.curve(), std::move(sigma), lambda, *fill, body.fixed(),
-                             derive_seed(derive_seed(scene.seed, kDetailStream), i)});
+                             derive_seed(derive_seed(scene.seed, kDetailStream), i),
+                             outline ? *outline : theme_outline_colour(*fill, theme)});
   }
   return looks;
 }
@@ -74,15 +79,26 @@ bool has_transparent_background(const Scene& scene) {
   return scene.render.background == kTransparentBackground;
 }
 
+Theme scene_theme(const Scene& scene) {
+  return parse_theme(scene.render.theme).value_or(Theme::kPaper);
+}
+
 Rgba scene_background(const Scene& scene) {
   if (has_transparent_background(scene)) return Rgba{{0.f, 0.f, 0.f, 0.f}};
-  // The loader accepts only "#rgb" and "#rrggbb" besides "transparent".
-  return parse_hex_color(scene.render.background).value_or(Rgba{});
+  // The loader accepts only "#rgb", "#rrggbb", "transparent" or nothing (the theme's).
+  return parse_hex_color(scene.render.background).value_or(theme_background(scene_theme(scene)));
+}
+
+double scene_outline_px(const Scene& scene) {
+  return scene.render.outline_width > 0.0 ? scene.render.outline_width : 1.5;
 }
 
 FrameText frame_text(const Scene& scene) {
   const RenderSpec& r = scene.render;
   FrameText text;
+  const Rgba colour = theme_text_colour(scene_theme(scene));
+  for (std::size_t c = 0; c < 4; ++c)
+    text.colour[c] = static_cast<std::uint8_t>(std::lround(colour.channels[c] * 255.f));
   text.title = r.title;
   text.caption = r.caption;
   if (r.clock) {

@@ -13,6 +13,7 @@
 #include "engine/scene/scene.h"
 #include "render/draw/camera.h"
 #include "render/draw/overlay_geometry.h"
+#include "render/draw/palette.h"
 #include "render/draw/scene_renderer.h"
 #include "render/text/frame_text.h"
 
@@ -25,8 +26,13 @@ std::vector<BodyLook> body_looks(const Scene& scene, const World& world);
 // The explicit camera of the scene's render.camera, or nullopt for "auto".
 std::optional<Camera> scene_camera(const Scene& scene, int width_px, int height_px);
 
-// render.background as the renderer takes it: the colour, or (0, 0, 0, 0) for "transparent".
+// render.theme (palette.h).
+Theme scene_theme(const Scene& scene);
+// render.background as the renderer takes it: the colour (the theme's when the scene names
+// none), or (0, 0, 0, 0) for "transparent".
 Rgba scene_background(const Scene& scene);
+// render.outline.width: px at 720 lines.
+double scene_outline_px(const Scene& scene);
 
 // render.title, caption, clock and scale_bar as the text painter takes them.
 FrameText frame_text(const Scene& scene);

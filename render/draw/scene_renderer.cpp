@@ -330,8 +330,8 @@ void SceneRenderer::build_meshes() {
   std::vector<float> palette;
   palette.reserve(bodies_.size() * 12);
   for (const BodyLook& body : bodies_) {
-    for (const Rgba& c :
-         {body.fill, outline_colour(body.fill), xor_key(settings_.background, body.fill)}) {
+    for (const Rgba& c : {body.fill, body.outline.value_or(outline_colour(body.fill)),
+                          xor_key(settings_.background, body.fill)}) {
       palette.insert(palette.end(), c.channels.begin(), c.channels.end());
     }
   }

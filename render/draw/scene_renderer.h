@@ -51,6 +51,7 @@ struct BodyLook {
   Rgba fill;
   bool fixed = false;
   std::uint64_t seed = 0;
+  std::optional<Rgba> outline;  // the outline's colour; none: the fill darkened
 };
 
 struct RenderSettings {

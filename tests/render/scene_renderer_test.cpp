@@ -24,7 +24,13 @@ constexpr int kWidth = 320;
 constexpr int kHeight = 180;
 
 BodyLook look(std::vector<Vec2> control, const char* colour, double sigma, bool fixed = false) {
-  BodyLook body{PeriodicBSpline(std::move(control)), {}, {}, *parse_hex_color(colour), fixed, 7};
+  BodyLook body{PeriodicBSpline(std::move(control)),
+                {},
+                {},
+                *parse_hex_color(colour),
+                fixed,
+                7,
+                std::nullopt};
   body.sigma.assign(body.curve.size(), sigma);
   body.lambda.assign(body.curve.size(), 0.9 * sigma);
   return body;

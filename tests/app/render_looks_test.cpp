@@ -1,0 +1,78 @@
+// How frames look through the program: render.theme (print stays grey, dark has its background),
+// render.outline (colour and width), and --camera, which frames exactly as the scene's camera
+// keys would.
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "render/image.h"
+#include "support/file_text.h"
+#include "support/render_command_fixture.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using rugosim::Image;
+using rugosim::testing::differing_pixels;
+using rugosim::testing::figure12a;
+using rugosim::testing::Outcome;
+using rugosim::testing::RenderCommand;
+
+TEST_F(RenderCommand, PrintThemeFramesAreGreyAndDarkOnesHaveTheirBackground) {
+  const Image print =
+      frame(fixed_camera_scene(R"([], "theme": "print", "clock": true)").string(), 40, {});
+  ASSERT_FALSE(print.rgba.empty());
+  std::size_t coloured = 0;
+  for (std::size_t i = 0; i < print.rgba.size(); i += 4) {
+    coloured += print.rgba[i] != print.rgba[i + 1] || print.rgba[i + 1] != print.rgba[i + 2];
+  }
+  EXPECT_EQ(coloured, 0u) << "every pixel of a print frame is grey";
+  EXPECT_EQ(print.rgba[4 * 160 + 0], 255) << "a white background";
+
+  const Image dark = frame(fixed_camera_scene(R"([], "theme": "dark")").string(), 40, {});
+  ASSERT_FALSE(dark.rgba.empty());
+  // The top middle of the frame is background: #1c1d21.
+  const std::uint8_t* p = dark.pixel(160, 2);
+  EXPECT_EQ(p[0], 0x1c);
+  EXPECT_EQ(p[1], 0x1d);
+  EXPECT_EQ(p[2], 0x21);
+  // An explicit background wins over the theme's.
+  const Image dark_on_white =
+      frame(fixed_camera_scene(R"([], "theme": "dark", "background": "#ffffff")").string(), 40, {});
+  EXPECT_EQ(dark_on_white.pixel(160, 2)[0], 255);
+}
+
+TEST_F(RenderCommand, OutlineColourAndWidthAreTheScenes) {
+  const auto red_pixels = [&](const std::string& outline) {
+    const Image image = frame(fixed_camera_scene("[], " + outline).string(), 40, {});
+    std::size_t red = 0;
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4)
+      red += image.rgba[i] == 255 && image.rgba[i + 1] == 0 && image.rgba[i + 2] == 0;
+    return red;
+  };
+  const std::size_t thin = red_pixels(R"("outline": {"color": "#ff0000", "width": 1.5})");
+  const std::size_t wide = red_pixels(R"("outline": {"color": "#ff0000", "width": 6})");
+  EXPECT_GT(thin, 100u);
+  EXPECT_GT(wide, 3 * thin) << "four times the width, several times the full-coverage pixels";
+  EXPECT_EQ(red_pixels(R"("outline": {"width": 6})"), 0u) << "no red without the colour";
+}
+
+TEST_F(RenderCommand, CameraOptionFramesAsTheScenesCameraKeys) {
+  // fixed_camera_scene() sets {"center": [0, 1.1], "height": 2.6}; figure12a has "auto".
+  const Image from_scene = frame(fixed_camera_scene().string(), 60, {});
+  const Image from_option = frame(figure12a(), 60, {"--camera", "0,1.1,2.6"});
+  ASSERT_FALSE(from_option.rgba.empty());
+  EXPECT_EQ(differing_pixels(from_scene, from_option), 0u);
+  const Image automatic = frame(fixed_camera_scene().string(), 60, {"--camera", "auto"});
+  EXPECT_EQ(differing_pixels(automatic, frame(figure12a(), 60, {})), 0u);
+  for (const std::string bad : {"1,2", "0,0,0", "a,b,c", "0,0,1,2"}) {
+    const Outcome r = run(
+        {figure12a(), "-o", (dir_ / "out" / "x.png").string(), "--frame", "1", "--camera", bad});
+    EXPECT_EQ(r.code, 2) << bad << "\n" << r.err;
+    EXPECT_NE(r.err.find("--camera"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir_ / "out" / "x.png"));
+  }
+}
+
+}  // namespace
