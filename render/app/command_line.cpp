@@ -131,6 +131,19 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       ->delimiter(',')
       ->type_name("LIST");
   c.render
+      ->add_option("--columns", c.render_options.columns,
+                   "a strip's frames per row (default: all in one row)")
+      ->check(number_in({1, false, 1000, false, true, "frames"}))
+      ->type_name("C");
+  c.render
+      ->add_option(
+          "--gap", c.render_options.gap,
+          "pixels between a strip's frames (default: a 160th of the frame width, at least 2)")
+      ->check(number_in({0, false, 1000, false, true, "px"}))
+      ->type_name("PX");
+  c.render->add_flag("--strip-labels", c.render_options.strip_labels,
+                     "write each strip frame's time under it (render.clock's format)");
+  c.render
       ->add_option("--strip", c.render_options.strip,
                    "write one PNG of N frames spread over the clip, side by side")
       ->check(number_in({1, false, 1000, false, true, "frames"}))

@@ -54,6 +54,9 @@ struct RenderOptions {
   std::string anti_aliasing = "shader";
   std::optional<std::vector<std::string>> overlays;  // replaces render.overlays
   std::size_t strip = 0;                             // > 0: one PNG of this many frames
+  std::size_t columns = 0;                           // frames per row of a strip; 0: one row
+  std::optional<int> gap;     // px between a strip's frames; default: frame width / 160, ≥ 2
+  bool strip_labels = false;  // the time under each frame of a strip
   int png_level = 1;
   std::string png_filter = "up";
   std::optional<int> gl_threads;  // llvmpipe rasteriser threads (LP_NUM_THREADS)

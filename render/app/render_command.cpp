@@ -29,6 +29,7 @@
 #include "render/sinks/mp4_sink.h"
 #include "render/sinks/png_io.h"
 #include "render/sinks/png_sequence_sink.h"
+#include "render/text/frame_text.h"
 
 namespace rugosim::app {
 namespace {
@@ -208,6 +209,8 @@ std::pair<int, int> frame_size(const std::string& text, const Scene& scene, Outp
 
 struct Plan {
   OutputKind kind = OutputKind::kMp4;
+  StripGrid strip;                  // of OutputKind::kStrip
+  std::vector<std::string> labels;  // a strip's time labels, one per frame (--strip-labels)
   ClipFormat clip_format = ClipFormat::kGif;  // of OutputKind::kClip
   bool transparent = false;                   // render.background "transparent": keep alpha
   FrameRange range;
@@ -215,6 +218,30 @@ struct Plan {
   PngSettings png;
   Mp4Options mp4;
 };
+
+// A strip's grid, its labels and, without --size, a frame size that keeps it at most 4,000 px
+// wide (a slide's or a page's width at print resolution).
+void plan_strip(const RenderOptions& o, const Scene& scene, Plan& plan) {
+  constexpr int kWidest = 4000;
+  const auto count = static_cast<int>(plan.clip.frames.size());
+  const int columns = o.columns > 0 ? std::min(static_cast<int>(o.columns), count) : count;
+  const auto gap_for = [&](int width) { return o.gap.value_or(std::max(2, width / 160)); };
+  if (o.size.empty() &&
+      columns * plan.clip.width + (columns - 1) * gap_for(plan.clip.width) > kWidest) {
+    const int width = std::max(2, (kWidest - (columns - 1) * gap_for(plan.clip.width)) / columns);
+    plan.clip.height =
+        std::max(2, static_cast<int>(std::lround(static_cast<double>(width) * plan.clip.height /
+                                                 static_cast<double>(plan.clip.width))));
+    plan.clip.width = width;
+  }
+  plan.strip = StripGrid{columns, gap_for(plan.clip.width),
+                         o.strip_labels ? strip_label_band(plan.clip.height) : 0};
+  if (o.strip_labels) {
+    const std::string format = scene.render.clock ? scene.render.clock->format : "t = %.2f s";
+    for (const std::size_t k : plan.clip.frames)
+      plan.labels.push_back(clock_text(format, static_cast<double>(k) / plan.clip.fps));
+  }
+}
 
 Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
   Plan plan;
@@ -251,6 +278,11 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
       plan.clip.frames.push_back(k);
   }
   std::tie(plan.clip.width, plan.clip.height) = frame_size(o.size, scene, plan.kind);
+  if (plan.kind != OutputKind::kStrip && (o.columns > 0 || o.gap || o.strip_labels)) {
+    throw UsageError(
+        "--columns, --gap and --strip-labels lay out a strip: expected --strip N with them");
+  }
+  if (plan.kind == OutputKind::kStrip) plan_strip(o, scene, plan);
   const std::optional<GlBackend> backend = parse_gl_backend(o.backend);
   if (!backend) throw UsageError("--backend: expected osmesa or egl, got \"" + o.backend + "\"");
   plan.clip.backend = *backend;
@@ -361,12 +393,13 @@ int run_render(const RenderOptions& o) {
     progress.finish();
     if (sink) sink->close();
     if (plan.kind == OutputKind::kStrip && !result.interrupted) {
-      write_png_file(
-          o.output,
-          compose_film_strip(kept, std::max(2, plan.clip.width / 160),
-                             plan.transparent ? std::array<std::uint8_t, 4>{0, 0, 0, 0}
-                                              : std::array<std::uint8_t, 4>{255, 255, 255, 255}),
-          plan.png);
+      Image strip =
+          compose_film_grid(kept, plan.strip,
+                            plan.transparent ? std::array<std::uint8_t, 4>{0, 0, 0, 0}
+                                             : std::array<std::uint8_t, 4>{255, 255, 255, 255});
+      label_strip(strip, plan.strip, plan.clip.width, plan.clip.height, plan.labels,
+                  frame_text(loaded->scene).colour);
+      write_png_file(o.output, strip, plan.png);
     } else if (plan.kind == OutputKind::kPngStill && kept.size() == 1) {
       write_png_file(o.output, kept.front(), plan.png);
     }

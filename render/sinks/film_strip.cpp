@@ -1,5 +1,6 @@
 #include "render/sinks/film_strip.h"
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -23,12 +24,17 @@ bool well_formed(const Image& image) {
 
 }  // namespace
 
-Image compose_film_strip(std::span<const Image> frames, int gap_px,
-                         std::array<std::uint8_t, 4> gap_colour) {
+Image compose_film_grid(std::span<const Image> frames, const StripGrid& grid,
+                        std::array<std::uint8_t, 4> background) {
   if (frames.empty()) throw std::invalid_argument("film strip: no frames");
-  if (gap_px < 0) {
-    throw std::invalid_argument(std::string("film strip: the gap must be 0 or more pixels, got ")
-                                    .append(std::to_string(gap_px)));
+  if (grid.gap_px < 0 || grid.label_px < 0 || grid.columns < 0) {
+    throw std::invalid_argument(
+        std::string("film strip: the gap, the label band and the columns must be 0 or more, got ")
+            .append(std::to_string(grid.gap_px))
+            .append(", ")
+            .append(std::to_string(grid.label_px))
+            .append(", ")
+            .append(std::to_string(grid.columns)));
   }
   const Image& first = frames.front();
   for (std::size_t i = 0; i < frames.size(); ++i) {
@@ -50,25 +56,40 @@ Image compose_film_strip(std::span<const Image> frames, int gap_px,
     }
   }
   const auto n = static_cast<long long>(frames.size());
-  const long long width = n * first.width + (n - 1) * gap_px;
-  if (frames.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
-      width > std::numeric_limits<int>::max()) {
-    throw std::invalid_argument("film strip: too wide for one image");
+  const long long columns = grid.columns == 0 ? n : std::min<long long>(grid.columns, n);
+  const long long rows = (n + columns - 1) / columns;
+  const long long width = columns * first.width + (columns - 1) * grid.gap_px;
+  const long long height =
+      rows * (first.height + grid.label_px) + (rows - 1) * static_cast<long long>(grid.gap_px);
+  if (width > std::numeric_limits<int>::max() || height > std::numeric_limits<int>::max() ||
+      width * height > std::numeric_limits<int>::max() / 4) {
+    throw std::invalid_argument("film strip: too large for one image");
   }
-  Image strip(static_cast<int>(width), first.height);
+  Image strip(static_cast<int>(width), static_cast<int>(height));
+  for (std::size_t i = 0; i < strip.rgba.size(); i += 4)
+    std::memcpy(strip.rgba.data() + i, background.data(), 4);
   const std::size_t frame_row = first.stride();
-  for (int y = 0; y < strip.height; ++y) {
-    std::uint8_t* out = strip.pixel(0, y);
-    for (std::size_t i = 0; i < frames.size(); ++i) {
-      if (i > 0) {
-        for (int g = 0; g < gap_px; ++g, out += 4)
-          std::memcpy(out, gap_colour.data(), 4);
-      }
-      std::memcpy(out, frames[i].pixel(0, y), frame_row);
-      out += frame_row;
-    }
+  const StripGrid used{static_cast<int>(columns), grid.gap_px, grid.label_px};
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const auto [x, y] = grid_cell(used, first.width, first.height, i, frames.size());
+    for (int row = 0; row < first.height; ++row)
+      std::memcpy(strip.pixel(x, y + row), frames[i].pixel(0, row), frame_row);
   }
   return strip;
+}
+
+std::array<int, 2> grid_cell(const StripGrid& grid, int frame_width, int frame_height,
+                             std::size_t i, std::size_t count) {
+  const std::size_t columns =
+      grid.columns == 0 ? count : std::min(static_cast<std::size_t>(grid.columns), count);
+  const auto column = static_cast<int>(i % columns);
+  const auto row = static_cast<int>(i / columns);
+  return {column * (frame_width + grid.gap_px), row * (frame_height + grid.label_px + grid.gap_px)};
+}
+
+Image compose_film_strip(std::span<const Image> frames, int gap_px,
+                         std::array<std::uint8_t, 4> gap_colour) {
+  return compose_film_grid(frames, StripGrid{0, gap_px, 0}, gap_colour);
 }
 
 std::vector<std::size_t> strip_frame_indices(std::size_t first, std::size_t last,

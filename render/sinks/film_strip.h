@@ -12,10 +12,27 @@
 
 namespace rugosim {
 
-// The frames left to right, `gap_px` columns of `gap_colour` (RGBA) between neighbours and
-// none at the ends: width n·w + (n − 1)·gap_px, height h. Throws std::invalid_argument when
-// there are no frames, when a frame is empty, malformed or not the size of the first, when
-// gap_px < 0, or when the strip would be wider than an int holds.
+// How the frames of a strip are laid out: in rows of `columns` (0: one row of all), `gap_px`
+// apart across and down, each with a band of `label_px` under it (for its time label).
+struct StripGrid {
+  int columns = 0;
+  int gap_px = 0;
+  int label_px = 0;
+};
+
+// The frames in reading order on a grid, the gaps, bands and any empty cells of the last row
+// in `background` (RGBA): width c·w + (c − 1)·gap, height r·(h + label) + (r − 1)·gap for c
+// columns and r rows. Throws std::invalid_argument when there are no frames, when a frame is
+// empty, malformed or not the size of the first, when the gap, band or columns are negative,
+// or when the image would be larger than an int holds a side.
+Image compose_film_grid(std::span<const Image> frames, const StripGrid& grid,
+                        std::array<std::uint8_t, 4> background);
+
+// The top left corner (x, y) of frame i's cell, for `count` frames of `frame_width` px.
+std::array<int, 2> grid_cell(const StripGrid& grid, int frame_width, int frame_height,
+                             std::size_t i, std::size_t count);
+
+// One row, no bands: compose_film_grid(frames, {0, gap_px, 0}, gap_colour).
 Image compose_film_strip(std::span<const Image> frames, int gap_px,
                          std::array<std::uint8_t, 4> gap_colour);
 

@@ -91,6 +91,24 @@ TextLayout text_layout(int height) {
   return t;
 }
 
+int strip_label_band(int frame_height) {
+  return static_cast<int>(std::lround(1.6 * text_layout(frame_height).clock_px));
+}
+
+void label_strip(Image& strip, const StripGrid& grid, int frame_width, int frame_height,
+                 const std::vector<std::string>& labels,
+                 const std::array<std::uint8_t, 4>& colour) {
+  if (labels.empty()) return;
+  Font font(default_font_path());
+  const int px = text_layout(frame_height).clock_px;
+  for (std::size_t i = 0; i < labels.size(); ++i) {
+    const auto [x, y] = grid_cell(grid, frame_width, frame_height, i, labels.size());
+    const TextExtent e = font.measure(labels[i], px);
+    const int baseline = y + frame_height + (grid.label_px + e.ascent - e.descent) / 2;
+    font.draw(strip, labels[i], px, x + (frame_width - e.width) / 2, baseline, colour);
+  }
+}
+
 FrameTextPainter::FrameTextPainter(FrameText text) : text_(std::move(text)) {
   if (text_.any()) font_ = std::make_unique<Font>(default_font_path());
 }

@@ -13,8 +13,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "render/image.h"
+#include "render/sinks/film_strip.h"
 #include "render/text/font.h"
 
 namespace rugosim {
@@ -49,6 +51,15 @@ struct TextLayout {
   int title_px = 0, caption_px = 0, clock_px = 0, bar_thickness = 0;
 };
 TextLayout text_layout(int height);
+
+// The band under each frame of a strip that holds its label (px): 1.6 × the clock's text size
+// for frames `frame_height` px high.
+int strip_label_band(int frame_height);
+// Writes labels[i] centred in the band under frame i of a strip laid out by `grid`
+// (film_strip.h), in `colour` (straight RGBA). Throws std::runtime_error when the font cannot
+// be opened.
+void label_strip(Image& strip, const StripGrid& grid, int frame_width, int frame_height,
+                 const std::vector<std::string>& labels, const std::array<std::uint8_t, 4>& colour);
 
 class FrameTextPainter {
  public:

@@ -67,6 +67,9 @@ std::vector<NumericOption> table() {
   rows.push_back({"render", "--crf", {"0"}, kPast64Bits});
   rows.push_back({"render", "--strip", {}, kPast64Bits});
   rows.push_back({"render", "--frame", {"0"}, kPast64Bits});
+  // Without --strip these refuse even a good value, naming themselves and what they expect.
+  rows.push_back({"render", "--columns", {}, kPast64Bits});
+  rows.push_back({"render", "--gap", {}, kPast64Bits});
   rows.push_back({"render", "--gl-threads", {"0"}, kPast64Bits});
   rows.push_back({"render", "--png-workers", {}, kPast64Bits});
   rows.push_back({"render", "--png-level", {"0"}, kPast64Bits});

@@ -15,6 +15,7 @@
 #include "render/app/command_line.h"
 #include "render/image.h"
 #include "render/sinks/png_io.h"
+#include "render/text/frame_text.h"
 #include "support/file_text.h"
 #include "support/render_command_fixture.h"
 #include "support/video_probe.h"
@@ -238,6 +239,60 @@ TEST_P(RenderTransparent, ClipKeepsTheFramesAndTheirAlpha) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, RenderTransparent, ::testing::Values("webm", "mov", "webp"));
+
+TEST_F(RenderCommand, StripsKeepAtMost4000PxWideAndLayOutAGridWithTimeLabels) {
+  const fs::path scene = fixed_camera_scene();
+  const std::string wide = (dir_ / "out" / "wide.png").string();
+  Outcome r = run({scene.string(), "-o", wide, "--strip", "6"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image strip = read_png_file(wide);
+  EXPECT_LE(strip.width, 4000) << "six 1280x720 frames shrink to fit";
+  EXPECT_GT(strip.width, 3900);
+  EXPECT_NEAR(static_cast<double>(strip.height), (strip.width / 6.0) * 720.0 / 1280.0, 4.0);
+
+  const std::string plain = (dir_ / "out" / "plain.png").string();
+  const std::string labelled = (dir_ / "out" / "labelled.png").string();
+  const std::vector<std::string> grid = {"--strip", "6",       "--columns", "3",
+                                         "--size",  "320x180", "--gap",     "4"};
+  std::vector<std::string> args = {scene.string(), "-o", plain};
+  args.insert(args.end(), grid.begin(), grid.end());
+  ASSERT_EQ(run(args).code, 0);
+  args[2] = labelled;
+  args.push_back("--strip-labels");
+  ASSERT_EQ(run(args).code, 0);
+  const Image a = read_png_file(plain);
+  const Image b = read_png_file(labelled);
+  EXPECT_EQ(a.width, 3 * 320 + 2 * 4);
+  EXPECT_EQ(a.height, 2 * 180 + 4);
+  const int band = rugosim::strip_label_band(180);
+  ASSERT_EQ(b.height, 2 * (180 + band) + 4);
+  // The frames are the same; the bands hold dark text, centred under each frame.
+  for (int cell = 0; cell < 6; ++cell) {
+    const int x0 = (cell % 3) * 324;
+    const int ya = (cell / 3) * 184;
+    const int yb = (cell / 3) * (184 + band);
+    std::size_t differ = 0;
+    for (int y = 0; y < 180; ++y) {
+      differ +=
+          !std::equal(a.pixel(x0, ya + y), a.pixel(x0, ya + y) + 4 * 320, b.pixel(x0, yb + y));
+    }
+    EXPECT_EQ(differ, 0u) << "cell " << cell;
+    int left = 320, right = -1;
+    for (int y = yb + 180; y < yb + 180 + band; ++y) {
+      for (int x = 0; x < 320; ++x) {
+        if (b.pixel(x0 + x, y)[0] < 128) {
+          left = std::min(left, x);
+          right = std::max(right, x);
+        }
+      }
+    }
+    EXPECT_GE(right, left) << "a label under cell " << cell;
+    EXPECT_NEAR((left + right) / 2.0, 160.0, 4.0) << "centred, cell " << cell;
+  }
+  r = run({scene.string(), "-o", (dir_ / "out" / "x.mp4").string(), "--columns", "3"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("expected --strip N"), std::string::npos) << r.err;
+}
 
 TEST(UnknownCommand, SuggestsTheNearestCommandWithinTwoEdits) {
   const auto c = rugosim::app::make_command_line(1);

@@ -23,6 +23,45 @@ Image random_frame(int width, int height, std::mt19937& rng) {
   return image;
 }
 
+// Five frames in rows of two with label bands: every pixel is a frame's own, or background.
+TEST(FilmStrip, GridPutsFramesInReadingOrderWithBandsAndGaps) {
+  std::mt19937 rng(32);
+  const int width = 4;
+  const int height = 3;
+  const StripGrid grid{2, 1, 2};
+  const std::array<std::uint8_t, 4> background{9, 8, 7, 6};
+  std::vector<Image> frames;
+  for (int i = 0; i < 5; ++i)
+    frames.push_back(random_frame(width, height, rng));
+  const Image strip = compose_film_grid(frames, grid, background);
+  ASSERT_EQ(strip.width, 2 * width + 1);
+  ASSERT_EQ(strip.height, 3 * (height + 2) + 2 * 1);
+  std::vector<int> owner(static_cast<std::size_t>(strip.width * strip.height), -1);
+  for (std::size_t i = 0; i < frames.size(); ++i) {
+    const auto [x0, y0] = grid_cell(grid, width, height, i, frames.size());
+    EXPECT_EQ(x0, static_cast<int>(i % 2) * (width + 1));
+    EXPECT_EQ(y0, static_cast<int>(i / 2) * (height + 2 + 1));
+    for (int y = 0; y < height; ++y) {
+      for (int x = 0; x < width; ++x) {
+        EXPECT_TRUE(std::equal(frames[i].pixel(x, y), frames[i].pixel(x, y) + 4,
+                               strip.pixel(x0 + x, y0 + y)));
+        owner[static_cast<std::size_t>((y0 + y) * strip.width + x0 + x)] = static_cast<int>(i);
+      }
+    }
+  }
+  for (int y = 0; y < strip.height; ++y) {
+    for (int x = 0; x < strip.width; ++x) {
+      if (owner[static_cast<std::size_t>(y * strip.width + x)] >= 0) continue;
+      EXPECT_TRUE(std::equal(background.begin(), background.end(), strip.pixel(x, y)))
+          << x << "," << y;
+    }
+  }
+  // More columns than frames: one row.
+  EXPECT_EQ(compose_film_grid(frames, StripGrid{9, 0, 0}, background).height, height);
+  EXPECT_THROW(compose_film_grid(frames, StripGrid{-1, 0, 0}, background), std::invalid_argument);
+  EXPECT_THROW(compose_film_grid(frames, StripGrid{2, 0, -3}, background), std::invalid_argument);
+}
+
 TEST(FilmStrip, FramesSideBySideWithGapsBetweenOnly) {
   std::mt19937 rng(31);
   const int width = 5;
