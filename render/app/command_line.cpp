@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "engine/core/version.h"
+#include "engine/scene/scene_loader.h"
 #include "render/app/accuracy_options.h"
 #include "render/app/number_option.h"
 
@@ -275,32 +276,6 @@ void finish_parse(CommandLine& c) {
   c.plot_options.contacts = !c.no_contacts;
 }
 
-namespace {
-
-// The optimal string alignment distance: insertions, deletions, substitutions and swaps of
-// neighbours, each one edit (the typos people make on a command name).
-std::size_t edit_distance(const std::string& a, const std::string& b) {
-  const std::size_t n = a.size();
-  const std::size_t m = b.size();
-  std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1, 0));
-  for (std::size_t i = 0; i <= n; ++i)
-    d[i][0] = i;
-  for (std::size_t j = 0; j <= m; ++j)
-    d[0][j] = j;
-  for (std::size_t i = 1; i <= n; ++i) {
-    for (std::size_t j = 1; j <= m; ++j) {
-      const std::size_t change = a[i - 1] == b[j - 1] ? 0 : 1;
-      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + change});
-      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) {
-        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-      }
-    }
-  }
-  return d[n][m];
-}
-
-}  // namespace
-
 std::string unknown_command_error(const CommandLine& c, const std::string& word) {
   if (word.empty() || word.front() == '-') return {};
   std::vector<std::string> names;
@@ -308,15 +283,7 @@ std::string unknown_command_error(const CommandLine& c, const std::string& word)
     if (command->get_name() == word) return {};
     names.push_back(command->get_name());
   }
-  std::string nearest;
-  std::size_t best = 3;  // more than two edits away is no typo
-  for (const std::string& name : names) {
-    const std::size_t distance = edit_distance(word, name);
-    if (distance < best) {
-      best = distance;
-      nearest = name;
-    }
-  }
+  const std::string nearest = closest_match(word, names);
   if (!nearest.empty()) {
     return fmt::format("unknown command \"{}\"; did you mean \"{}\"?", word, nearest);
   }

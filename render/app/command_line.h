@@ -47,9 +47,9 @@ std::unique_ptr<CommandLine> make_command_line(int cpus);
 void finish_parse(CommandLine& c);
 
 // When `word` (the first argument) is not an option and names no command: the error for it,
-// with the nearest command when one is at most two edits away (a letter added, dropped,
-// changed, or two neighbours swapped), e.g. `unknown command "simulte"; did you mean
-// "simulate"?`. Empty when `word` is an option or a command.
+// with the nearest command when it is close enough to be a typo (closest_match, as for
+// misspelt scene keys), e.g. `unknown command "simulte"; did you mean "simulate"?`. Empty when
+// `word` is an option or a command.
 std::string unknown_command_error(const CommandLine& c, const std::string& word);
 
 }  // namespace rugosim::app

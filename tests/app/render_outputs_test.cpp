@@ -294,7 +294,7 @@ TEST_F(RenderCommand, StripsKeepAtMost4000PxWideAndLayOutAGridWithTimeLabels) {
   EXPECT_NE(r.err.find("expected --strip N"), std::string::npos) << r.err;
 }
 
-TEST(UnknownCommand, SuggestsTheNearestCommandWithinTwoEdits) {
+TEST(UnknownCommand, SuggestsTheNearestCommandForATypo) {
   const auto c = rugosim::app::make_command_line(1);
   EXPECT_EQ(rugosim::app::unknown_command_error(*c, "simulte"),
             "unknown command \"simulte\"; did you mean \"simulate\"?");
