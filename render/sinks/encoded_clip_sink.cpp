@@ -116,8 +116,7 @@ bool clip_fps_is_valid(ClipFormat format, double fps) {
   return std::isfinite(fps) && fps > 0.0 && fps <= most;
 }
 
-struct EncodedClipSink::Encoder {
-  std::string path;     // the target, named by errors
+struct EncodedClipSink::Encoder : LibavErrors {  // path: the target, named by errors
   std::string written;  // the file written: the target, or a temporary beside it
   bool committed = false;
   // Destroyed bottom up: the packet and frames, the filters, the encoder, then the muxer and
@@ -135,21 +134,7 @@ struct EncodedClipSink::Encoder {
     if (!committed && written != path) std::remove(written.c_str());
   }
 
-  [[noreturn]] void fail(const std::string& what, int code) const {
-    throw SinkError(
-        std::string(path).append(": ").append(what).append(": ").append(av_error_text(code)));
-  }
-  [[noreturn]] void fail(const std::string& what) const {
-    throw SinkError(std::string(path).append(": ").append(what));
-  }
-  void check(int code, const std::string& what) const {
-    if (code < 0) fail(what, code);
-  }
-  // The AVIO layer keeps a failed write in pb->error rather than returning it.
-  void flush_io(const std::string& what) const {
-    avio_flush(format->pb);
-    if (format->pb->error < 0) fail(what, format->pb->error);
-  }
+  void flush_io(const std::string& what) const { LibavErrors::flush_io(format->pb, what); }
 
   // Hands `input` (null: end of stream) to the encoder and writes every packet it gives back.
   void encode(const AVFrame* input, const std::string& what) {

@@ -17,4 +17,18 @@ std::string av_error_text(int code) {
   return std::string(text.data());
 }
 
+void LibavErrors::fail(const std::string& what, int code) const {
+  throw SinkError(path + ": " + what + ": " + av_error_text(code));
+}
+
+void LibavErrors::fail(const std::string& what) const {
+  throw SinkError(path + ": " + what);
+}
+
+void LibavErrors::flush_io(AVIOContext* pb, const std::string& what) const {
+  if (pb == nullptr) return;
+  avio_flush(pb);
+  if (pb->error < 0) fail(what, pb->error);
+}
+
 }  // namespace rugosim

@@ -4,11 +4,14 @@
 
 #include <string>
 
+#include "render/sinks/frame_sink.h"
+
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
 #include <libavutil/dict.h>
 #include <libavutil/frame.h>
+#include <libswscale/swscale.h>
 }
 
 namespace rugosim {
@@ -30,6 +33,23 @@ struct FrameFree {
 };
 struct PacketFree {
   void operator()(AVPacket* packet) const { av_packet_free(&packet); }
+};
+struct ScalerFree {
+  void operator()(SwsContext* scaler) const { sws_freeContext(scaler); }
+};
+
+// How a sink writing `path` reports a failure: SinkError("<path>: <what>: <FFmpeg's reason>").
+struct LibavErrors {
+  std::string path;
+
+  [[noreturn]] void fail(const std::string& what, int code) const;
+  [[noreturn]] void fail(const std::string& what) const;
+  void check(int code, const std::string& what) const {
+    if (code < 0) fail(what, code);
+  }
+  // The AVIO layer remembers a failed write in pb->error (and drops later writes) rather than
+  // returning it from the call that buffered the data; flushing is where it surfaces.
+  void flush_io(AVIOContext* pb, const std::string& what) const;
 };
 
 // An AVDictionary of options, freed on every path.

@@ -36,10 +36,6 @@ constexpr std::array<std::string_view, 10> kPresets{"ultrafast", "superfast", "v
 // browsers and the ISO BMFF readers expect).
 constexpr const char* kMovFlags = "frag_keyframe+empty_moov+default_base_moof";
 
-struct ScalerFree {
-  void operator()(SwsContext* scaler) const { sws_freeContext(scaler); }
-};
-
 }  // namespace
 
 void quiet_ffmpeg_logs() {
@@ -54,8 +50,7 @@ bool mp4_crf_is_valid(int crf) {
   return crf >= 0 && crf <= 51;
 }
 
-struct Mp4Sink::Encoder {
-  std::string path;
+struct Mp4Sink::Encoder : LibavErrors {
   // Destroyed bottom up: the packet and frame, the scaler, the encoder, then the muxer and
   // its file.
   std::unique_ptr<AVFormatContext, FormatContextFree> format;
@@ -66,25 +61,7 @@ struct Mp4Sink::Encoder {
   AVStream* stream = nullptr;  // owned by `format`
   std::int64_t next_pts = 0;   // in codec time base = frames
 
-  [[noreturn]] void fail(const std::string& what, int code) const {
-    throw SinkError(
-        std::string(path).append(": ").append(what).append(": ").append(av_error_text(code)));
-  }
-  [[noreturn]] void fail(const std::string& what) const {
-    throw SinkError(std::string(path).append(": ").append(what));
-  }
-  void check(int code, const std::string& what) const {
-    if (code < 0) fail(what, code);
-  }
-  // The AVIO layer remembers a failed write in pb->error (and drops later writes) rather than
-  // returning it from the call that buffered the data; this is where it surfaces.
-  void check_io(const std::string& what) const {
-    if (format->pb != nullptr && format->pb->error < 0) fail(what, format->pb->error);
-  }
-  void flush_io(const std::string& what) const {
-    avio_flush(format->pb);
-    check_io(what);
-  }
+  void flush_io(const std::string& what) const { LibavErrors::flush_io(format->pb, what); }
 
   // Hands `input` (null: end of stream) to the encoder and writes every packet it gives back;
   // each packet that completes a fragment pushes that fragment to the file at once.

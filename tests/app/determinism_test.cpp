@@ -25,6 +25,7 @@
 #include "render/sinks/png_io.h"
 #include "support/file_text.h"
 #include "support/program_under_test.h"
+#include "support/render_command_fixture.h"
 #include "support/video_probe.h"
 
 namespace {
@@ -37,27 +38,12 @@ using rugosim::testing::program;
 using rugosim::testing::source_dir;
 using rugosim::testing::VideoProbe;
 
-std::string figure12a() {
-  return (source_dir() / "scenes" / "figure12a.json").string();
-}
+using rugosim::testing::figure12a;
 
 using rugosim::testing::read_text;
 
-// The program's exit code, or 128 + the signal that ended it.
-int wait_for(pid_t pid) {
-  int status = 0;
-  while (::waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return -1;
-  }
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
-  return -1;
-}
-
-struct Outcome {
-  int code = -1;
-  std::string err;  // what the program wrote on stderr
-};
+using rugosim::testing::Outcome;
+using rugosim::testing::wait_for;
 
 // Changes to the child's environment: a value sets the variable, nullopt removes it.
 using Environment = std::map<std::string, std::optional<std::string>>;

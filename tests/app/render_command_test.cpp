@@ -287,11 +287,7 @@ TEST_F(RenderCommand, BadUsageExits2AndWritesNothing) {
   const std::string mp4 = out + "/clip.mp4";
   const std::string bad_scene =
       (source_dir() / "tests" / "scene" / "bad" / "34_density_negative.json").string();
-  struct Case {
-    std::vector<std::string> args;
-    std::string message;  // a part of what stderr must say
-  };
-  const std::vector<Case> cases = {
+  expect_usage_errors({
       {{figure12a(), "-o", out + "/clip.avi"}, "cannot tell the output format"},
       {{figure12a(), "-o", out + "/f.png", "--format", "png"}, "pattern"},
       {{figure12a(), "-o", mp4, "--frames", "10:5"}, "--frames 10:5"},
@@ -304,21 +300,7 @@ TEST_F(RenderCommand, BadUsageExits2AndWritesNothing) {
       {{figure12a(), "-o", mp4, "--aa", "bogus"}, "--aa"},
       {{figure12a(), "-o", mp4, "--backend", "bogus"}, "--backend"},
       {{bad_scene, "-o", mp4}, "/bodies/1/material/density"},
-  };
-  for (const Case& c : cases) {
-    std::string shown;
-    for (const std::string& a : c.args)
-      shown.append(" ").append(a);
-    const Outcome r = run(c.args);
-    EXPECT_EQ(r.code, 2) << shown << "\n" << r.err;
-    EXPECT_NE(r.err.find("error"), std::string::npos) << shown << "\n" << r.err;
-    EXPECT_NE(r.err.find(c.message), std::string::npos)
-        << shown << "\nstderr lacks \"" << c.message << "\":\n"
-        << r.err;
-    EXPECT_TRUE(listing(dir_ / "out").empty()) << shown;
-    fs::remove_all(dir_ / "out");
-    fs::create_directories(dir_ / "out");
-  }
+  });
 }
 
 TEST_F(RenderCommand, FullDeviceExits1NamingTheDeviceAndTheReason) {

@@ -124,11 +124,7 @@ TEST_F(RenderCommand, StillAndGifAreKeptWithoutYAndReplacedWithIt) {
 
 TEST_F(RenderCommand, OutputsThatWouldHoldAnotherFormatThanTheirNameExit2AndWriteNothing) {
   const std::string out = (dir_ / "out").string();
-  struct Case {
-    std::vector<std::string> args;
-    std::string message;  // a part of what stderr must say
-  };
-  const std::vector<Case> cases = {
+  expect_usage_errors({
       {{figure12a(), "-o", out + "/strip.mp4", "--strip", "4"}, "must end in .png"},
       {{figure12a(), "-o", out + "/strip.png", "--strip", "4", "--format", "mp4"},
        "the name says png"},
@@ -144,19 +140,7 @@ TEST_F(RenderCommand, OutputsThatWouldHoldAnotherFormatThanTheirNameExit2AndWrit
       {{figure12a(), "-o", out + "/x.gif", "--fps", "60"}, "at most 50 frames per second"},
       {{figure12a(), "-o", out + "/x.avi"}, "cannot tell the output format"},
       {{figure12a(), "-o", out + "/x.mov", "--format", "webm"}, "the name says mov"},
-  };
-  for (const Case& c : cases) {
-    std::string shown;
-    for (const std::string& a : c.args)
-      shown.append(" ").append(a);
-    const Outcome r = run(c.args);
-    EXPECT_EQ(r.code, 2) << shown << "\n" << r.err;
-    EXPECT_NE(r.err.find("error"), std::string::npos) << shown << "\n" << r.err;
-    EXPECT_NE(r.err.find(c.message), std::string::npos)
-        << shown << "\nstderr lacks \"" << c.message << "\":\n"
-        << r.err;
-    EXPECT_TRUE(listing(dir_ / "out").empty()) << shown;
-  }
+  });
 }
 
 // figure12a with a fixed camera and render.background "transparent" (fixed_camera_scene's

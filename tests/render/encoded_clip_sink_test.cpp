@@ -21,6 +21,7 @@ extern "C" {
 }
 
 #include "support/file_text.h"
+#include "support/sink_error.h"
 #include "support/video_probe.h"
 #include "support/webp_probe.h"
 
@@ -49,15 +50,7 @@ Image shifting_bars(int width, int height, int k) {
   return image;
 }
 
-std::string sink_error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const SinkError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no SinkError thrown";
-  return {};
-}
+using testing::sink_error_of;
 
 class EncodedClipSinkTest : public ::testing::Test {
  protected:

@@ -25,6 +25,7 @@ extern "C" {
 }
 
 #include "support/file_text.h"
+#include "support/sink_error.h"
 #include "support/video_probe.h"
 
 namespace rugosim {
@@ -68,16 +69,7 @@ Rgb frame_colour(int i) {
           static_cast<std::uint8_t>((i * 151 + 160) % 256)};
 }
 
-// The message of the SinkError that `action` throws; fails the test when it throws nothing.
-std::string sink_error_of(const std::function<void()>& action) {
-  try {
-    action();
-  } catch (const SinkError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "no SinkError thrown";
-  return {};
-}
+using testing::sink_error_of;
 
 class Mp4SinkTest : public ::testing::Test {
  protected:

@@ -189,6 +189,30 @@ class RenderCommand : public ::testing::Test {
     return read_png_file(file.string());
   }
 
+  // A bad command line and a part of what its error must say.
+  struct UsageCase {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  // Each case exits 2 with "error" and its message on stderr, leaving out/ empty (emptied after
+  // each case).
+  void expect_usage_errors(const std::vector<UsageCase>& cases) {
+    for (const UsageCase& c : cases) {
+      std::string shown;
+      for (const std::string& a : c.args)
+        shown.append(" ").append(a);
+      const Outcome r = run(c.args);
+      EXPECT_EQ(r.code, 2) << shown << "\n" << r.err;
+      EXPECT_NE(r.err.find("error"), std::string::npos) << shown << "\n" << r.err;
+      EXPECT_NE(r.err.find(c.message), std::string::npos)
+          << shown << "\nstderr lacks \"" << c.message << "\":\n"
+          << r.err;
+      EXPECT_TRUE(listing(dir_ / "out").empty()) << shown;
+      fs::remove_all(dir_ / "out");
+      fs::create_directories(dir_ / "out");
+    }
+  }
+
   fs::path dir_;
   int runs_ = 0;
   int scenes_ = 0;

@@ -18,32 +18,14 @@ extern "C" {
 #include <libswscale/swscale.h>
 }
 
+#include "render/sinks/libav_support.h"
+
 namespace rugosim::testing {
 namespace {
 
 struct InputFree {
   void operator()(AVFormatContext* input) const { avformat_close_input(&input); }
 };
-struct CodecContextFree {
-  void operator()(AVCodecContext* codec) const { avcodec_free_context(&codec); }
-};
-struct FrameFree {
-  void operator()(AVFrame* frame) const { av_frame_free(&frame); }
-};
-struct PacketFree {
-  void operator()(AVPacket* packet) const { av_packet_free(&packet); }
-};
-struct ScalerFree {
-  void operator()(SwsContext* scaler) const { sws_freeContext(scaler); }
-};
-
-std::string error_text(int code) {
-  std::array<char, AV_ERROR_MAX_STRING_SIZE> text{};
-  if (av_strerror(code, text.data(), text.size()) < 0) {
-    std::snprintf(text.data(), text.size(), "error %d", code);
-  }
-  return std::string(text.data());
-}
 
 class Prober {
  public:
@@ -132,7 +114,7 @@ class Prober {
     throw std::runtime_error(std::string(path_).append(": ").append(what));
   }
   void check(int code, const std::string& what) const {
-    if (code < 0) fail(std::string(what).append(": ").append(error_text(code)));
+    if (code < 0) fail(std::string(what).append(": ").append(av_error_text(code)));
   }
 
   void receive_frames(VideoProbe& probe) {
