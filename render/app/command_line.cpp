@@ -234,7 +234,8 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       "usage, a bad scene or an unreadable golden.");
 
   c.plot = c.app.add_subcommand(
-      "plot", "draw friction per collision event and velocity over time as PNG (gnuplot)");
+      "plot",
+      "draw friction per collision event and velocity over time as PNG, SVG or PDF (gnuplot)");
   c.plot
       ->add_option("--events", c.plot_options.events_path,
                    "events.csv: draw DIR/friction.png, mu of each collision over time")
@@ -253,11 +254,23 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       ->type_name("NAME,NAME...");
   c.plot->add_flag("--no-contacts", c.no_contacts,
                    "leave out the resting-contact micro-collisions (kind \"contact\")");
+  c.plot
+      ->add_option("--format", c.plot_options.format,
+                   "png, svg or pdf: DIR/friction.<format> and DIR/velocity.<format>")
+      ->check(CLI::IsMember({"png", "svg", "pdf"}))
+      ->capture_default_str();
+  c.plot
+      ->add_option("--size", c.plot_options.size,
+                   "figure size in pixels (a PDF: hundredths of an inch) (default: 1000x600)")
+      ->type_name("WxH");
   c.plot->footer(
       "Example: rugosim plot --events out/events.csv --trajectory out/traj.csv -o out/plots "
       "--bodies 'pebble,\"disk, small\"'\n"
+      "         rugosim plot --events out/events.csv -o out/paper --format pdf --size 800x500\n"
       "At least one of --events and --trajectory is needed. Requires gnuplot on PATH (Debian: "
-      "gnuplot-nox). PNGs are written atomically; a bad CSV leaves none (exit 2).");
+      "gnuplot-nox). Figures are written atomically; a bad CSV leaves none (exit 2). The ten pairs "
+      "with the most events get colours and legend entries; the rest are grey, counted in one "
+      "entry.");
 
   return made;
 }

@@ -101,7 +101,9 @@ struct PlotOptions {
   // --bodies values, each a comma-separated list of names (quoted as in CSV when a name holds a
   // comma); empty: every body of the trajectory.
   std::vector<std::string> bodies;
-  bool contacts = true;  // draw the micro-collisions (kind "contact") under the collisions
+  bool contacts = true;        // draw the micro-collisions (kind "contact") under the collisions
+  std::string format = "png";  // png, svg or pdf: DIR/friction.<format>, DIR/velocity.<format>
+  std::string size;            // "WxH" px (a PDF: hundredths of an inch); empty: 1000x600
 };
 
 // Draws DIR/friction.png (μ of each collision event over time, paper fig. 8) and
