@@ -177,8 +177,15 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       "  rugosim render scenes/figure12b.json -o out/strip.png --strip 6 --size 480x360\n"
       "  rugosim render scenes/figure12a.json -o out/figure12a.gif --size 480x270 --fps 25\n"
       "  rugosim render scenes/figure12a.json -o out/still.png --frame 90 --size 1920x1080\n"
-      "An existing OUT is kept unless -y is given. On Ctrl-C the frame in hand is finished, the "
-      "output is closed (a playable MP4) and the exit code is 130.");
+      "  rugosim render scenes/figure12a_slide.json -o out/slide.webm   (VP9; .mov: ProRes 4444, "
+      ".webp: animated WebP)\n"
+      "  rugosim render scenes/figure12a.json -o out/grid.png --strip 6 --columns 3 "
+      "--strip-labels\n"
+      "  rugosim render scenes/figure12a.json -o out/close.png --frame 60 --camera 0,0.5,1.2\n"
+      "With render.background \"transparent\" in the scene, PNG, GIF, WebM, MOV and WebP keep "
+      "alpha (an MP4 is refused). An existing OUT is kept unless -y is given. On Ctrl-C the frame "
+      "in hand is finished, the output is closed (a playable MP4; a complete GIF, WebM, MOV or "
+      "WebP) and the exit code is 130.");
 
   c.snapshot = c.app.add_subcommand(
       "snapshot", "visual regression: render frames and compare them with golden PNGs");
