@@ -382,6 +382,29 @@ TEST_F(RenderInterrupt, SigintClosesTheMp4WithEveryFrameRendered) {
   EXPECT_EQ(listing(dir_ / "out"), std::vector<std::string>{"clip.mp4"});
 }
 
+// A GIF or WebM is written whole when the render stops: Ctrl-C leaves one with every frame
+// rendered, and no temporary file.
+TEST_F(RenderInterrupt, SigintFinishesTheGifAndWebmWithEveryFrameRendered) {
+  for (const std::string kind : {"gif", "webm"}) {
+    const fs::path clip = dir_ / "out" / ("clip." + kind);
+    fs::path err_file;
+    const pid_t pid = start_long_render(clip, 1, err_file);
+    ASSERT_GE(pid, 0);
+    ::kill(pid, SIGINT);
+    const int code = wait_for(pid);
+    const std::string err = read_text(err_file);
+    EXPECT_EQ(code, 130) << err;
+    const long n = frames_interrupted(err);
+    ASSERT_GT(n, 0) << err;
+    EXPECT_LT(n, 1801) << err;
+    const VideoProbe probe = probe_video(clip.string());
+    EXPECT_EQ(probe.codec, kind == "gif" ? "gif" : "vp9");
+    EXPECT_EQ(probe.frames, static_cast<std::size_t>(n)) << kind;
+    EXPECT_EQ(listing(dir_ / "out"), std::vector<std::string>{"clip." + kind});
+    fs::remove(clip);
+  }
+}
+
 // The MP4 is fragmented: a render killed outright leaves the fragments completed so far
 // playable. The kill can land while a fragment is being written (a fragment takes several
 // write calls), so the file may end inside its last sample: that cut tail is all that is lost.
