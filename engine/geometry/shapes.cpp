@@ -77,13 +77,46 @@ std::vector<Vec2> box_control_points(double width, double height, std::size_t n)
     return points;
   }
 
+  return polygon_control_points(corners, {}, n);
+}
+
+std::vector<Vec2> polygon_control_points(std::span<const Vec2> corners,
+                                         std::span<const double> rounding, std::size_t n) {
+  const std::size_t k = corners.size();
+  if (k < 3) throw std::invalid_argument("a polygon needs at least 3 corners");
+  if (!rounding.empty() && rounding.size() != k) {
+    throw std::invalid_argument("polygon rounding: one length per corner, or none");
+  }
+  if (n < 3 * k) {
+    throw std::invalid_argument("a polygon of " + std::to_string(k) + " corners needs at least " +
+                                std::to_string(3 * k) + " segments, got " + std::to_string(n));
+  }
+  std::vector<double> lengths(k);
+  double perimeter = 0.0;
+  for (std::size_t e = 0; e < k; ++e) {
+    lengths[e] = (corners[(e + 1) % k] - corners[e]).norm();
+    if (!(lengths[e] > 0.0) || !std::isfinite(lengths[e])) {
+      throw std::invalid_argument("polygon corners " + std::to_string(e) + " and " +
+                                  std::to_string((e + 1) % k) + " coincide");
+    }
+    perimeter += lengths[e];
+  }
+  for (std::size_t c = 0; !rounding.empty() && c < k; ++c) {
+    const double r = rounding[c];
+    const double room = 0.5 * std::min(lengths[c], lengths[(c + k - 1) % k]);
+    if (!(r >= 0.0) || r > room) {
+      throw std::invalid_argument("polygon rounding of corner " + std::to_string(c) +
+                                  " must be in [0, " + std::to_string(room) +
+                                  "] m (half its shorter edge), got " + std::to_string(r));
+    }
+  }
   // Share the points left after the corners among the edges by length (largest remainder),
   // so the spacing is as even as possible and the result is deterministic.
-  const std::size_t spare = n - kSharpBoxMinSegments;
-  std::array<std::size_t, 4> counts{};
-  std::array<double, 4> remainders{};
+  const std::size_t spare = n - 3 * k;
+  std::vector<std::size_t> counts(k, 0);
+  std::vector<double> remainders(k, 0.0);
   std::size_t assigned = 0;
-  for (std::size_t e = 0; e < 4; ++e) {
+  for (std::size_t e = 0; e < k; ++e) {
     const double exact = static_cast<double>(spare) * lengths[e] / perimeter;
     counts[e] = static_cast<std::size_t>(std::floor(exact));
     remainders[e] = exact - std::floor(exact);
@@ -96,13 +129,32 @@ std::vector<Vec2> box_control_points(double width, double height, std::size_t n)
     remainders[best] = -1.0;
     ++assigned;
   }
-  for (std::size_t e = 0; e < 4; ++e) {
-    for (int k = 0; k < 3; ++k)
-      points.push_back(corners[e]);
-    const Vec2& from = corners[e];
-    const Vec2& to = corners[(e + 1) % 4];
-    for (std::size_t k = 1; k <= counts[e]; ++k) {
-      const double f = static_cast<double>(k) / static_cast<double>(counts[e] + 1);
+  std::vector<Vec2> points;
+  points.reserve(n);
+  for (std::size_t e = 0; e < k; ++e) {
+    const Vec2& corner = corners[e];
+    const double r = rounding.empty() ? 0.0 : rounding[e];
+    if (r > 0.0) {
+      // Three single points, r back along the edge coming in, the corner, r along the edge
+      // going out: the curve turns within about r of the corner, inside the polygon.
+      const Vec2 in = (corner - corners[(e + k - 1) % k]).normalized();
+      const Vec2 out = (corners[(e + 1) % k] - corner).normalized();
+      points.push_back(corner - r * in);
+      points.push_back(corner);
+      points.push_back(corner + r * out);
+    } else {
+      // A triple point: the curve passes through the corner with zero tangent, sharp.
+      for (int copy = 0; copy < 3; ++copy)
+        points.push_back(corner);
+    }
+    // The edge's own points, evenly between where this corner's rounding ends and the next
+    // one's begins (the whole edge between sharp corners).
+    const std::size_t next = (e + 1) % k;
+    const Vec2 along = (corners[next] - corner) / lengths[e];
+    const Vec2 from = corner + r * along;
+    const Vec2 to = corners[next] - (rounding.empty() ? 0.0 : rounding[next]) * along;
+    for (std::size_t j = 1; j <= counts[e]; ++j) {
+      const double f = static_cast<double>(j) / static_cast<double>(counts[e] + 1);
       points.push_back(from + f * (to - from));
     }
   }

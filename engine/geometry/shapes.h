@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/core/types.h"
@@ -29,6 +30,17 @@ std::vector<Vec2> ellipse_control_points(double a, double b, std::size_t n);
 // the corners are rounded, inside the rectangle.
 std::vector<Vec2> box_control_points(double width, double height, std::size_t n);
 inline constexpr std::size_t kSharpBoxMinSegments = 12;
+
+// A polygon of k >= 3 corners (in order, either orientation; it must not cross itself), as n >=
+// 3k control points. A corner without rounding is a triple point, so the curve passes through
+// it sharp and every segment between corners is straight; a corner with rounding r (m, at
+// most half its shorter edge) is the corner and a point r along each edge, so the curve turns
+// smoothly within about r of it. The n − 3k points left over are spread along the edges by
+// length. `rounding` is empty (all sharp) or one length per corner. Throws
+// std::invalid_argument for fewer than 3 corners or 3k segments, coinciding neighbours, or a
+// rounding out of range.
+std::vector<Vec2> polygon_control_points(std::span<const Vec2> corners,
+                                         std::span<const double> rounding, std::size_t n);
 
 // A random irregular outline: radius r·(1 + a·g(θ)) with g a seeded sum of low harmonics
 // (orders 2..6) scaled so |g| <= 1; a in [0, 0.9]. Concave for large a; always star-shaped

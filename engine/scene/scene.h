@@ -31,14 +31,15 @@ struct SceneDefaults {
   static constexpr const char* kAccuracy = "normal";
 };
 
-enum class ShapeKind { kControlPoints, kCircle, kEllipse, kBox, kBlob };
+enum class ShapeKind { kControlPoints, kCircle, kEllipse, kBox, kBlob, kPolygon };
 
 struct ShapeSpec {
   ShapeKind kind = ShapeKind::kControlPoints;
-  std::vector<Vec2> control_points;                        // m, body frame (kControlPoints)
-  double radius = 0.0;                                     // m (circle, blob)
-  Vec2 radii = Vec2::Zero();                               // m (ellipse)
-  Vec2 size = Vec2::Zero();                                // m, width and height (box)
+  std::vector<Vec2> control_points;  // m, body frame (kControlPoints; kPolygon: its corners)
+  std::vector<double> rounding;      // m, kPolygon: one per corner, or empty (all sharp)
+  double radius = 0.0;               // m (circle, blob)
+  Vec2 radii = Vec2::Zero();         // m (ellipse)
+  Vec2 size = Vec2::Zero();          // m, width and height (box)
   double irregularity = SceneDefaults::kBlobIrregularity;  // blob, in [0, 0.9]
   std::uint64_t seed = 0;                                  // blob outline
   std::size_t segments = SceneDefaults::kSegments;         // generated shapes

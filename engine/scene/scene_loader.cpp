@@ -63,12 +63,12 @@ Material read_material(Reader& r, const json& v, const std::string& path) {
 // The segment count a shape will have, for checking a σ list; 0 when the shape is invalid.
 std::size_t read_shape(Reader& r, const json& v, const std::string& path, ShapeSpec& shape) {
   static const std::vector<std::string> kinds = {"control_points", "circle", "ellipse", "box",
-                                                 "blob"};
+                                                 "blob",           "polygon"};
   if (!r.is_object(v, path)) return 0;
   if (v.size() != 1) {
     r.error(path,
             "expected exactly one of \"control_points\", \"circle\", \"ellipse\", "
-            "\"box\", \"blob\", got " +
+            "\"box\", \"blob\", \"polygon\", got " +
                 std::to_string(v.size()) + " keys");
     r.check_keys(v, path, kinds);
     return 0;
@@ -132,6 +132,69 @@ std::size_t read_shape(Reader& r, const json& v, const std::string& path, ShapeS
       }
     }
     segments();
+  } else if (kind == "polygon") {
+    shape.kind = ShapeKind::kPolygon;
+    r.check_keys(spec, at, {"points", "rounding", "segments"});
+    const json* points = required("points");
+    if (points == nullptr) return 0;
+    const std::string points_at = child(at, "points");
+    if (!points->is_array() || points->size() < 3 || points->size() > kMaxSegments / 3) {
+      r.error(points_at, "expected an array of 3 to " + std::to_string(kMaxSegments / 3) +
+                             " corners [x, y], got " +
+                             (points->is_array() ? std::to_string(points->size()) + " corners"
+                                                 : shown(*points)));
+      return 0;
+    }
+    for (std::size_t i = 0; i < points->size(); ++i) {
+      Vec2 p = Vec2::Zero();
+      r.vec2((*points)[i], child(points_at, i), p);
+      shape.control_points.push_back(p);
+    }
+    const std::size_t corners = shape.control_points.size();
+    for (std::size_t i = 0; i < corners; ++i) {
+      if (shape.control_points[i] == shape.control_points[(i + 1) % corners]) {
+        r.error(child(points_at, (i + 1) % corners),
+                "a corner equal to the one before it; expected distinct neighbours");
+      }
+    }
+    if (spec.contains("rounding")) {
+      const json& rounding = spec["rounding"];
+      const std::string rounding_at = child(at, "rounding");
+      if (rounding.is_array()) {
+        if (rounding.size() != corners) {
+          r.error(rounding_at, "expected one length per corner (" + std::to_string(corners) +
+                                   "), got " + std::to_string(rounding.size()));
+        }
+        for (std::size_t i = 0; i < rounding.size(); ++i) {
+          double x = 0.0;
+          r.ranged(rounding[i], child(rounding_at, i), x, 0.0, false,
+                   std::numeric_limits<double>::infinity(), true, "a length >= 0 (m)");
+          shape.rounding.push_back(x);
+        }
+      } else {
+        double x = 0.0;
+        r.ranged(rounding, rounding_at, x, 0.0, false, std::numeric_limits<double>::infinity(),
+                 true, "a length >= 0 (m), or one per corner");
+        shape.rounding.assign(corners, x);
+      }
+      // At most half of each edge beside the corner, so that roundings never overlap.
+      for (std::size_t i = 0; i < shape.rounding.size() && i < corners; ++i) {
+        const Vec2& c = shape.control_points[i];
+        const double room =
+            0.5 * std::min((shape.control_points[(i + 1) % corners] - c).norm(),
+                           (c - shape.control_points[(i + corners - 1) % corners]).norm());
+        if (shape.rounding[i] > room) {
+          r.error(rounding.is_array() ? child(rounding_at, i) : rounding_at,
+                  "corner " + std::to_string(i) + ": expected at most " + shown(json(room)) +
+                      " m (half its shorter edge), got " + shown(json(shape.rounding[i])));
+        }
+      }
+    }
+    shape.segments = std::max(SceneDefaults::kSegments, 3 * corners);
+    if (spec.contains("segments")) {
+      r.count(spec["segments"], child(at, "segments"), shape.segments, 3 * corners, kMaxSegments,
+              "B-spline segments (at least 3 per corner)");
+    }
   } else if (kind == "blob") {
     shape.kind = ShapeKind::kBlob;
     r.check_keys(spec, at, {"radius", "irregularity", "segments", "seed"});
@@ -146,7 +209,7 @@ std::size_t read_shape(Reader& r, const json& v, const std::string& path, ShapeS
   } else {
     std::string message = "unknown shape \"" + kind +
                           "\"; expected one of \"control_points\", "
-                          "\"circle\", \"ellipse\", \"box\", \"blob\"";
+                          "\"circle\", \"ellipse\", \"box\", \"blob\", \"polygon\"";
     const std::string suggestion = closest_match(kind, kinds);
     if (!suggestion.empty()) message += " (did you mean \"" + suggestion + "\"?)";
     r.error(at, message);

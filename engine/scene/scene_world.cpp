@@ -24,6 +24,8 @@ std::vector<Vec2> control_points(const ShapeSpec& shape) {
       return box_control_points(shape.size.x(), shape.size.y(), shape.segments);
     case ShapeKind::kBlob:
       return blob_control_points(shape.radius, shape.irregularity, shape.segments, shape.seed);
+    case ShapeKind::kPolygon:
+      return polygon_control_points(shape.control_points, shape.rounding, shape.segments);
     case ShapeKind::kControlPoints:
       break;
   }

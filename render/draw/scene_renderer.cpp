@@ -66,9 +66,9 @@ void unpremultiply(Image& image) {
     const unsigned alpha = image.rgba[i + 3];
     if (alpha == 255) continue;
     for (std::size_t c = 0; c < 3; ++c) {
-      image.rgba[i + c] = alpha == 0 ? 0
-                                     : static_cast<std::uint8_t>(std::min(
-                                           255u, (image.rgba[i + c] * 255u + alpha / 2) / alpha));
+      const unsigned straight =
+          alpha == 0 ? 0u : std::min(255u, (image.rgba[i + c] * 255u + alpha / 2) / alpha);
+      image.rgba[i + c] = static_cast<std::uint8_t>(straight);
     }
   }
 }

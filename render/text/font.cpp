@@ -16,6 +16,17 @@ std::string freetype_error(FT_Error error) {
 
 }  // namespace
 
+void blend_over(std::uint8_t* pixel, const std::array<std::uint8_t, 4>& colour, unsigned alpha) {
+  // Straight alpha "over": out_a = a + d(1 − a), out_c = (c a + d_c d (1 − a)) / out_a.
+  const unsigned below = (pixel[3] * (255u - alpha) + 127u) / 255u;
+  const unsigned out_a = alpha + below;
+  for (std::size_t c = 0; c < 3; ++c) {
+    const unsigned mixed = colour[c] * alpha + pixel[c] * below;
+    pixel[c] = static_cast<std::uint8_t>(out_a == 0 ? 0u : (mixed + out_a / 2) / out_a);
+  }
+  pixel[3] = static_cast<std::uint8_t>(out_a);
+}
+
 std::string default_font_path() {
   const char* chosen = std::getenv("RUGOSIM_FONT");
   return chosen != nullptr && *chosen != '\0' ? std::string(chosen)
@@ -160,18 +171,7 @@ void Font::draw(Image& image, std::string_view text, int pixel_height, int x, in
                        static_cast<std::size_t>(column)];
         const unsigned a = (coverage * colour[3] + 127u) / 255u;  // the text's alpha here
         if (a == 0) continue;
-        std::uint8_t* p = image.pixel(px, py);
-        // Straight alpha "over": out_a = a + d(1 − a), out_c = (c a + d_c d (1 − a)) / out_a.
-        const unsigned d = p[3];
-        const unsigned below = (d * (255u - a) + 127u) / 255u;
-        const unsigned out_a = a + below;
-        for (int c = 0; c < 3; ++c) {
-          p[c] = out_a == 0 ? 0
-                            : static_cast<std::uint8_t>((colour[static_cast<std::size_t>(c)] * a +
-                                                         p[c] * below + out_a / 2) /
-                                                        out_a);
-        }
-        p[3] = static_cast<std::uint8_t>(out_a);
+        blend_over(image.pixel(px, py), colour, a);
       }
     }
     pen += g.advance;

@@ -20,6 +20,10 @@
 
 namespace rugosim {
 
+// Composites `colour` (straight RGBA) at coverage `alpha` (0..255, already times the colour's
+// alpha) over the straight-alpha RGBA `pixel`.
+void blend_over(std::uint8_t* pixel, const std::array<std::uint8_t, 4>& colour, unsigned alpha);
+
 // The font text is drawn with: RUGOSIM_FONT when set, else DejaVu Sans where Debian puts it.
 std::string default_font_path();
 

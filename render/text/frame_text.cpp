@@ -10,21 +10,9 @@ namespace {
 
 void fill_rect(Image& image, int x0, int y0, int x1, int y1,
                const std::array<std::uint8_t, 4>& colour) {
-  const unsigned a = colour[3];
   for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y) {
-    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) {
-      std::uint8_t* p = image.pixel(x, y);
-      const unsigned below = (p[3] * (255u - a) + 127u) / 255u;
-      const unsigned out_a = a + below;
-      for (int c = 0; c < 3; ++c) {
-        p[c] =
-            out_a == 0
-                ? 0
-                : static_cast<std::uint8_t>(
-                      (colour[static_cast<std::size_t>(c)] * a + p[c] * below + out_a / 2) / out_a);
-      }
-      p[3] = static_cast<std::uint8_t>(out_a);
-    }
+    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x)
+      blend_over(image.pixel(x, y), colour, colour[3]);
   }
   image.picture = 0;
 }

@@ -1,8 +1,10 @@
 #include "engine/geometry/shapes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -105,6 +107,77 @@ TEST(Shapes, EveryGeneratedShapeIsAValidCounterClockwiseBoundary) {
       EXPECT_TRUE(is_counter_clockwise(curve));
     }
   }
+}
+
+// A sharp polygon is exactly its edges: every curve point lies on one of them (brute force
+// over the edges), each corner is reached, and the area is the polygon's (shoelace formula).
+TEST(Shapes, SharpPolygonIsExactlyItsEdges) {
+  const std::vector<Vec2> wedge = {Vec2(-0.3, 0.0), Vec2(0.3, 0.0), Vec2(0.05, 0.25),
+                                   Vec2(0.0, 0.1)};
+  for (std::size_t n : {12u, 13u, 40u}) {
+    const PeriodicBSpline curve(polygon_control_points(wedge, {}, n));
+    ASSERT_EQ(curve.size(), n);
+    std::vector<double> nearest_corner(wedge.size(), 1e9);
+    for (std::size_t j = 0; j < n; ++j) {
+      for (int k = 0; k <= 16; ++k) {
+        const Vec2 p = curve.point(j, k / 16.0);
+        double off = 1e9;
+        for (std::size_t e = 0; e < wedge.size(); ++e) {
+          const Vec2 a = wedge[e], b = wedge[(e + 1) % wedge.size()];
+          const double t = std::clamp((p - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
+          off = std::min(off, (a + t * (b - a) - p).norm());
+          nearest_corner[e] = std::min(nearest_corner[e], (p - a).norm());
+        }
+        EXPECT_LE(off, 1e-15) << n << " " << j << " " << k;
+      }
+    }
+    for (const double d : nearest_corner)
+      EXPECT_LE(d, 1e-15) << "every corner is on the curve, sharp";
+    double shoelace = 0.0;
+    for (std::size_t e = 0; e < wedge.size(); ++e)
+      shoelace += 0.5 * cross(wedge[e], wedge[(e + 1) % wedge.size()]);
+    EXPECT_NEAR(std::abs(signed_area(curve)), std::abs(shoelace), 1e-14);
+    EXPECT_TRUE(check_boundary(curve).valid);
+  }
+  // The box is the four-corner polygon.
+  const std::vector<Vec2> rectangle = {Vec2(-3.0, -0.2), Vec2(3.0, -0.2), Vec2(3.0, 0.2),
+                                       Vec2(-3.0, 0.2)};
+  for (std::size_t n : {12u, 31u})
+    EXPECT_EQ(box_control_points(6.0, 0.4, n), polygon_control_points(rectangle, {}, n));
+}
+
+// A rounded corner stays inside the polygon and misses the corner by a share of its rounding;
+// the other corners stay sharp.
+TEST(Shapes, RoundedPolygonCornersTurnInsideWithinTheirRounding) {
+  const std::vector<Vec2> square = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)};
+  const std::vector<double> rounding = {0.0, 0.2, 0.0, 0.4};
+  const PeriodicBSpline curve(polygon_control_points(square, rounding, 32));
+  EXPECT_TRUE(check_boundary(curve).valid);
+  std::vector<double> nearest(4, 1e9);
+  for (std::size_t j = 0; j < curve.size(); ++j) {
+    for (int k = 0; k <= 32; ++k) {
+      const Vec2 p = curve.point(j, k / 32.0);
+      EXPECT_GE(p.x(), -1e-15);
+      EXPECT_LE(p.x(), 1 + 1e-15);
+      EXPECT_GE(p.y(), -1e-15);
+      EXPECT_LE(p.y(), 1 + 1e-15);
+      for (std::size_t c = 0; c < 4; ++c)
+        nearest[c] = std::min(nearest[c], (p - square[c]).norm());
+    }
+  }
+  EXPECT_LE(nearest[0], 1e-15);
+  EXPECT_LE(nearest[2], 1e-15);
+  for (const std::size_t c : {1u, 3u}) {
+    EXPECT_GT(nearest[c], 0.05 * rounding[c]) << c;
+    EXPECT_LT(nearest[c], rounding[c]) << c;
+  }
+  EXPECT_GT(nearest[3], nearest[1]) << "more rounding, farther from the corner";
+  EXPECT_THROW(polygon_control_points(square, std::vector<double>{0.0, 0.6, 0.0, 0.0}, 32),
+               std::invalid_argument);
+  EXPECT_THROW(polygon_control_points(square, std::vector<double>{0.1}, 32), std::invalid_argument);
+  EXPECT_THROW(polygon_control_points(square, {}, 11), std::invalid_argument);
+  EXPECT_THROW(polygon_control_points(std::vector<Vec2>{Vec2(0, 0), Vec2(1, 0)}, {}, 12),
+               std::invalid_argument);
 }
 
 TEST(Shapes, SplineCircleApproachesTheDiskAreaAndInertia) {
