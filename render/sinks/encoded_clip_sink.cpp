@@ -220,6 +220,9 @@ EncodedClipSink::EncodedClipSink(std::string path, ClipFormat format, int width,
   out_of->filter_ctx = e.source;
   into->name = av_strdup("out");
   into->filter_ctx = e.sink;
+  if (out_of->name == nullptr || into->name == nullptr) {
+    e.fail("allocating the filters", AVERROR(ENOMEM));
+  }
   AVFilterInOut* inputs = into.release();
   AVFilterInOut* outputs = out_of.release();
   const std::string filters = (options.alpha ? "" : "format=rgb24,") + std::string(spec.filters);
@@ -260,14 +263,14 @@ EncodedClipSink::EncodedClipSink(std::string path, ClipFormat format, int width,
   if (format == ClipFormat::kWebm) {
     // Constant quality (crf with no bitrate), libvpx's "good" speed 4, rows in parallel.
     c->bit_rate = 0;
-    av_dict_set(codec_options.address(), "crf", "24", 0);
-    av_dict_set(codec_options.address(), "deadline", "good", 0);
-    av_dict_set(codec_options.address(), "cpu-used", "4", 0);
-    av_dict_set(codec_options.address(), "row-mt", "1", 0);
+    e.check(av_dict_set(codec_options.address(), "crf", "24", 0), "setting crf");
+    e.check(av_dict_set(codec_options.address(), "deadline", "good", 0), "setting deadline");
+    e.check(av_dict_set(codec_options.address(), "cpu-used", "4", 0), "setting cpu-used");
+    e.check(av_dict_set(codec_options.address(), "row-mt", "1", 0), "setting row-mt");
   } else if (format == ClipFormat::kMov) {
-    av_dict_set(codec_options.address(), "profile", "4444", 0);
+    e.check(av_dict_set(codec_options.address(), "profile", "4444", 0), "setting profile");
   } else if (format == ClipFormat::kWebp) {
-    av_dict_set(codec_options.address(), "quality", "90", 0);
+    e.check(av_dict_set(codec_options.address(), "quality", "90", 0), "setting quality");
   }
   e.check(avcodec_open2(c, codec, codec_options.address()),
           std::string("opening the ") + spec.encoder + " encoder");
