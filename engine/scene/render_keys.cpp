@@ -111,7 +111,21 @@ void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& 
   if (!r.is_object(v, path)) return;
   r.check_keys(v, path,
                {"size", "fps", "camera", "background", "overlays", "title", "caption", "clock",
-                "scale_bar", "theme", "outline"});
+                "scale_bar", "colour_bar", "theme", "outline"});
+  if (v.contains("colour_bar")) {
+    const json& bar = v["colour_bar"];
+    const std::string at = child(path, "colour_bar");
+    if (bar.is_boolean()) {
+      if (bar.get<bool>()) render.colour_bar = ColourBarSpec{};
+    } else if (bar.is_object()) {
+      r.check_keys(bar, at, {"corner"});
+      ColourBarSpec spec;
+      if (bar.contains("corner")) read_corner(r, bar["corner"], child(at, "corner"), spec.corner);
+      render.colour_bar = spec;
+    } else {
+      r.error(at, "expected true, false or {\"corner\": ...}, got " + shown(bar));
+    }
+  }
   if (v.contains("theme")) {
     r.string(v["theme"], child(path, "theme"), render.theme);
     if (v["theme"].is_string() && render.theme != "paper" && render.theme != "dark" &&

@@ -92,6 +92,11 @@ struct ScaleBarSpec {
   double length = 0.0;  // m
 };
 
+// render.colour_bar: the rugosity overlay's colours, 0 to the scene's largest λ, labelled.
+struct ColourBarSpec {
+  std::string corner = "bottom-right";
+};
+
 struct RenderSpec {
   int width = SceneDefaults::kWidth;
   int height = SceneDefaults::kHeight;
@@ -107,6 +112,7 @@ struct RenderSpec {
   std::string caption;  // drawn at the bottom, centred ("" for none)
   std::optional<ClockSpec> clock;
   std::optional<ScaleBarSpec> scale_bar;
+  std::optional<ColourBarSpec> colour_bar;  // drawn while the rugosity overlay is
 };
 
 // world.accuracy: a preset ("draft", "normal", "precise") and knobs that override it, by the

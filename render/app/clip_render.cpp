@@ -146,7 +146,7 @@ PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
     RenderSettings with_camera = settings;
     with_camera.camera = *camera;
     return std::make_unique<ContextRenderer>(std::move(context), looks, with_camera,
-                                             frame_text(loaded.scene));
+                                             frame_text(loaded.scene, looks, plan.overlays));
   };
   stages.consume = consume;
   stages.interrupted = interrupted;

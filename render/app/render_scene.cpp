@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/core/random.h"
+#include "engine/geometry/tolerance_profile.h"
 #include "render/draw/palette.h"
 
 namespace rugosim::app {
@@ -110,6 +111,21 @@ FrameText frame_text(const Scene& scene) {
     text.scale_bar = true;
     text.scale_bar_corner = parse_corner(r.scale_bar->corner).value_or(Corner::kBottomLeft);
     text.scale_bar_length = r.scale_bar->length;
+  }
+  return text;
+}
+
+FrameText frame_text(const Scene& scene, const std::vector<BodyLook>& looks,
+                     const Overlays& overlays) {
+  FrameText text = frame_text(scene);
+  if (scene.render.colour_bar && overlays.rugosity) {
+    text.colour_bar = true;
+    text.colour_bar_corner =
+        parse_corner(scene.render.colour_bar->corner).value_or(Corner::kBottomRight);
+    // The largest λ as the renderer scales the overlay's colours (scene_renderer.cpp).
+    for (const BodyLook& look : looks) {
+      text.largest_lambda = std::max(text.largest_lambda, ToleranceProfile(look.lambda).range().hi);
+    }
   }
   return text;
 }

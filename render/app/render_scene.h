@@ -36,6 +36,9 @@ double scene_outline_px(const Scene& scene);
 
 // render.title, caption, clock and scale_bar as the text painter takes them.
 FrameText frame_text(const Scene& scene);
+// The same, with render.colour_bar when the rugosity overlay is drawn (its range from `looks`).
+FrameText frame_text(const Scene& scene, const std::vector<BodyLook>& looks,
+                     const Overlays& overlays);
 bool has_transparent_background(const Scene& scene);
 
 // The camera that shows every body in every snapshot (their bands included).

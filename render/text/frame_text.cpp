@@ -27,6 +27,21 @@ std::optional<Corner> parse_corner(const std::string& name) {
   return std::nullopt;
 }
 
+std::array<std::uint8_t, 3> rugosity_ramp(double x) {
+  // The shader's numbers and arithmetic (float mix), so the bar shows the outlines' colours.
+  const float t = static_cast<float>(std::clamp(x, 0.0, 1.0));
+  const float a[3] = {0.267f, 0.005f, 0.329f};
+  const float b[3] = {0.128f, 0.567f, 0.551f};
+  const float c[3] = {0.993f, 0.906f, 0.144f};
+  std::array<std::uint8_t, 3> out{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const float v =
+        t < 0.5f ? a[i] + (b[i] - a[i]) * (t * 2.f) : b[i] + (c[i] - b[i]) * (t * 2.f - 1.f);
+    out[i] = static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.f, 1.f) * 255.f));
+  }
+  return out;
+}
+
 std::string clock_text(const std::string& format, double time) {
   char text[256];
   // The format holds exactly one %f or %.Nf (checked when the scene is read).
@@ -57,7 +72,7 @@ std::string length_label(double metres) {
   for (const Unit& u : kUnits) {
     if (metres >= u.size * (1.0 - 1e-9)) {
       char text[64];
-      std::snprintf(text, sizeof text, "%g %s", metres / u.size, u.name);
+      std::snprintf(text, sizeof text, "%.3g %s", metres / u.size, u.name);
       return text;
     }
   }
@@ -97,6 +112,39 @@ void label_strip(Image& strip, const StripGrid& grid, int frame_width, int frame
   }
 }
 
+void FrameTextPainter::paint_colour_bar(Image& image) {
+  const int w = image.width;
+  const int h = image.height;
+  const TextLayout layout = text_layout(h);
+  const int length = std::max(8, w / 5);
+  const int thickness = std::max(4, h / 60);
+  const bool left =
+      text_.colour_bar_corner == Corner::kTopLeft || text_.colour_bar_corner == Corner::kBottomLeft;
+  const bool top =
+      text_.colour_bar_corner == Corner::kTopLeft || text_.colour_bar_corner == Corner::kTopRight;
+  const int px = layout.clock_px;
+  const TextExtent e = font_->measure("λ", px);
+  // The name above the bar, the ends' values below it: from the corner, label, bar, values.
+  const int block = e.ascent + e.descent + layout.bar_thickness + thickness + layout.bar_thickness +
+                    e.ascent + e.descent;
+  const int x0 = left ? layout.margin : w - layout.margin - length;
+  const int y_top = top ? layout.margin : h - layout.margin - block;
+  const int bar_top = y_top + e.ascent + e.descent + layout.bar_thickness;
+  for (int x = 0; x < length; ++x) {
+    const auto rgb = rugosity_ramp(static_cast<double>(x) / std::max(1, length - 1));
+    const std::array<std::uint8_t, 4> colour{rgb[0], rgb[1], rgb[2], 255};
+    fill_rect(image, x0 + x, bar_top, x0 + x + 1, bar_top + thickness, colour);
+  }
+  const std::string name = "rugosity tolerance λ";
+  const TextExtent n = font_->measure(name, px);
+  font_->draw(image, name, px, x0 + (length - n.width) / 2, y_top + e.ascent, text_.colour);
+  const int values = bar_top + thickness + layout.bar_thickness + e.ascent;
+  font_->draw(image, "0", px, x0, values, text_.colour);
+  const std::string most = length_label(text_.largest_lambda);
+  const TextExtent m = font_->measure(most, px);
+  font_->draw(image, most, px, x0 + length - m.width, values, text_.colour);
+}
+
 FrameTextPainter::FrameTextPainter(FrameText text) : text_(std::move(text)) {
   if (text_.any()) font_ = std::make_unique<Font>(default_font_path());
 }
@@ -133,6 +181,7 @@ void FrameTextPainter::paint(Image& image, double time, double metres_per_pixel)
     const auto [x, baseline] = clock_origin(s, w, h);
     font_->draw(image, s, layout.clock_px, x, baseline, text_.colour);
   }
+  if (text_.colour_bar) paint_colour_bar(image);
   if (text_.scale_bar && metres_per_pixel > 0.0) {
     const double metres = text_.scale_bar_length > 0.0 ? text_.scale_bar_length
                                                        : scale_bar_length(w * metres_per_pixel);

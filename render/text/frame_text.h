@@ -34,10 +34,20 @@ struct FrameText {
   bool scale_bar = false;
   Corner scale_bar_corner = Corner::kBottomLeft;
   double scale_bar_length = 0.0;  // m; 0: chosen from the frame's width (scale_bar_length)
+  // The rugosity overlay's colour bar, from λ = 0 to `largest_lambda` (m), labelled.
+  bool colour_bar = false;
+  Corner colour_bar_corner = Corner::kBottomRight;
+  double largest_lambda = 0.0;
   std::array<std::uint8_t, 4> colour{34, 34, 34, 255};  // straight RGBA
 
-  bool any() const { return !title.empty() || !caption.empty() || clock || scale_bar; }
+  bool any() const {
+    return !title.empty() || !caption.empty() || clock || scale_bar || colour_bar;
+  }
 };
+
+// The rugosity overlay's colour at x in [0, 1] (shaders/outline.vert's ramp: dark blue, smooth,
+// through green to yellow, rough), RGB bytes.
+std::array<std::uint8_t, 3> rugosity_ramp(double x);
 
 // The clock's text at `time` (s).
 std::string clock_text(const std::string& format, double time);
@@ -75,6 +85,7 @@ class FrameTextPainter {
   // The pen's x and the baseline for `text` at `px` in `corner`.
   std::array<int, 2> corner_origin(const std::string& text, int px, Corner corner, int width,
                                    int height);
+  void paint_colour_bar(Image& image);
 
   FrameText text_;
   std::unique_ptr<Font> font_;  // null when there is no text

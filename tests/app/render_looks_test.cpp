@@ -1,12 +1,15 @@
 // How frames look through the program: render.theme (print stays grey, dark has its background),
 // render.outline (colour and width), and --camera, which frames exactly as the scene's camera
 // keys would.
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "render/image.h"
+#include "render/text/frame_text.h"
 #include "support/file_text.h"
 #include "support/render_command_fixture.h"
 
@@ -56,6 +59,33 @@ TEST_F(RenderCommand, OutlineColourAndWidthAreTheScenes) {
   EXPECT_GT(thin, 100u);
   EXPECT_GT(wide, 3 * thin) << "four times the width, several times the full-coverage pixels";
   EXPECT_EQ(red_pixels(R"("outline": {"width": 6})"), 0u) << "no red without the colour";
+}
+
+// render.colour_bar: the overlay's ramp from λ = 0 (left) to the largest λ (right), in the
+// bottom-right corner, only while the rugosity overlay is drawn.
+TEST_F(RenderCommand, ColourBarShowsTheRugosityRampOnlyWithItsOverlay) {
+  const Image with_bar =
+      frame(fixed_camera_scene(R"(["rugosity"], "colour_bar": true)").string(), 40, {});
+  const Image without_bar = frame(fixed_camera_scene(R"(["rugosity"])").string(), 40, {});
+  ASSERT_FALSE(with_bar.rgba.empty());
+  const auto count = [&](const Image& image, std::array<std::uint8_t, 3> rgb) {
+    std::size_t n = 0;
+    for (int y = image.height * 3 / 4; y < image.height; ++y) {
+      for (int x = image.width * 3 / 5; x < image.width; ++x) {
+        const std::uint8_t* p = image.pixel(x, y);
+        n += p[0] == rgb[0] && p[1] == rgb[1] && p[2] == rgb[2];
+      }
+    }
+    return n;
+  };
+  const auto smooth = rugosim::rugosity_ramp(0.0);
+  const auto rough = rugosim::rugosity_ramp(1.0);
+  EXPECT_GE(count(with_bar, smooth), 4u) << "the bar's left end";
+  EXPECT_GE(count(with_bar, rough), 4u) << "the bar's right end";
+  EXPECT_GT(differing_pixels(with_bar, without_bar), 300u);
+  // Without the overlay the key draws nothing.
+  const Image off = frame(fixed_camera_scene(R"([], "colour_bar": true)").string(), 40, {});
+  EXPECT_EQ(differing_pixels(off, frame(fixed_camera_scene().string(), 40, {})), 0u);
 }
 
 TEST_F(RenderCommand, CameraOptionFramesAsTheScenesCameraKeys) {
