@@ -5,7 +5,6 @@
 
 #include <cstdio>
 #include <filesystem>
-#include <regex>
 #include <set>
 #include <string>
 #include <vector>
@@ -65,11 +64,19 @@ TEST(PlotFigures, TheTenPairsWithTheMostEventsGetColoursAndTheRestOneGreyEntry) 
                                                            2.0, rugosim::app::FigureFormat{});
   std::vector<std::string> titles;
   std::set<std::string> colours;
-  const std::regex entry("keyentry [^\\n]*linecolor rgb '(#[0-9a-f]+)' title '([^']*)'");
-  for (auto it = std::sregex_iterator(script.begin(), script.end(), entry);
-       it != std::sregex_iterator(); ++it) {
-    colours.insert((*it)[1]);
-    titles.push_back((*it)[2]);
+  // Each legend entry: "keyentry ... linecolor rgb '#rrggbb' title '<title>' ...".
+  const auto quoted_after = [&](std::size_t from, const std::string& key) {
+    const std::size_t at = script.find(key, from);
+    if (at == std::string::npos) return std::string();
+    const std::size_t begin = at + key.size();
+    return script.substr(begin, script.find('\'', begin) - begin);
+  };
+  for (std::size_t at = script.find("keyentry"); at != std::string::npos;
+       at = script.find("keyentry", at + 1)) {
+    const std::size_t line_end = script.find('\n', at);
+    if (script.find("title '", at) > line_end) continue;
+    colours.insert(quoted_after(at, "linecolor rgb '"));
+    titles.push_back(quoted_after(at, "title '"));
   }
   ASSERT_EQ(titles.size(), 11u) << script;
   for (int p = 0; p < 10; ++p) {
