@@ -13,18 +13,22 @@ constexpr std::array<double, 4> kWeights = {0.3626837833783620, 0.31370664587788
 
 }  // namespace
 
+double segment_arc_length(const CubicSegment& segment, double t0, double t1) {
+  const double mid = 0.5 * (t0 + t1);
+  const double half = 0.5 * (t1 - t0);
+  double sum = 0.0;
+  for (std::size_t i = 0; i < kNodes.size(); ++i) {
+    // Nodes ±x on [-1, 1] are mid ± half·x on [t0, t1], and the interval scales the weights.
+    sum += kWeights[i] * (segment.derivative(mid - half * kNodes[i]).norm() +
+                          segment.derivative(mid + half * kNodes[i]).norm());
+  }
+  return half * sum;
+}
+
 double curve_length(const PeriodicBSpline& curve) {
   double length = 0.0;
-  for (std::size_t j = 0; j < curve.size(); ++j) {
-    const CubicSegment& segment = curve.segment(j);
-    double sum = 0.0;
-    for (std::size_t i = 0; i < kNodes.size(); ++i) {
-      // Nodes ±x on [-1, 1] are (1 ± x) / 2 on [0, 1], and the interval halves the weights.
-      sum += kWeights[i] * (segment.derivative(0.5 * (1.0 - kNodes[i])).norm() +
-                            segment.derivative(0.5 * (1.0 + kNodes[i])).norm());
-    }
-    length += 0.5 * sum;
-  }
+  for (std::size_t j = 0; j < curve.size(); ++j)
+    length += segment_arc_length(curve.segment(j), 0.0, 1.0);
   return length;
 }
 

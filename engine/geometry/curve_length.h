@@ -10,4 +10,7 @@ namespace rugosim {
 
 double curve_length(const PeriodicBSpline& curve);  // m
 
+// The length of one segment between parameters t0 ≤ t1 in [0, 1], by the same rule (m).
+double segment_arc_length(const CubicSegment& segment, double t0, double t1);
+
 }  // namespace rugosim

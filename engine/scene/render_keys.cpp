@@ -109,9 +109,18 @@ void read_colour(Reader& r, const json& v, const std::string& path, std::string&
 
 void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& render) {
   if (!r.is_object(v, path)) return;
-  r.check_keys(v, path,
-               {"size", "fps", "camera", "background", "overlays", "title", "caption", "clock",
-                "scale_bar", "colour_bar", "theme", "outline"});
+  r.check_keys(
+      v, path,
+      {"size", "fps", "camera", "background", "overlays", "title", "caption", "clock", "scale_bar",
+       "colour_bar", "theme", "outline", "roughness_scale", "roughness_length"});
+  if (v.contains("roughness_scale")) {
+    r.ranged(v["roughness_scale"], child(path, "roughness_scale"), render.roughness_scale, 0.0,
+             false, 100.0, false, "a number in [0, 100] (display-only: 0 draws smooth outlines)");
+  }
+  if (v.contains("roughness_length")) {
+    r.ranged(v["roughness_length"], child(path, "roughness_length"), render.roughness_length, 0.0,
+             true, 1e6, false, "a length in metres in (0, 1e6]");
+  }
   if (v.contains("colour_bar")) {
     const json& bar = v["colour_bar"];
     const std::string at = child(path, "colour_bar");

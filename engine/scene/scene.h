@@ -107,6 +107,10 @@ struct RenderSpec {
   std::string background = SceneDefaults::kBackground;
   std::string outline_color;   // "#rrggbb" for every outline; "" for the theme's
   double outline_width = 0.0;  // px at 720 lines (scaled with the frame); 0 for 1.5
+  // Display-only: the drawn rugosity detail's amplitude × roughness_scale, and its correlation
+  // length (m; 0 for 4 × the body's largest σ × roughness_scale). The physics never sees them.
+  double roughness_scale = 1.0;
+  double roughness_length = 0.0;
   std::vector<std::string> overlays;
   std::string title;    // drawn at the top, centred ("" for none)
   std::string caption;  // drawn at the bottom, centred ("" for none)

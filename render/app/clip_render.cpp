@@ -128,6 +128,7 @@ PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
   RenderSettings settings;
   settings.background = scene_background(loaded.scene);
   settings.outline_px = scene_outline_px(loaded.scene);
+  settings.detail = scene_detail(loaded.scene);
   settings.anti_aliasing = plan.anti_aliasing;
   settings.overlays = plan.overlays;
   ClipSource source(world, plan, scene_camera(loaded.scene, plan.width, plan.height), interrupted);

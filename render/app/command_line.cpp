@@ -19,6 +19,7 @@ namespace {
 // Durations are bounded by the run-length checks, which know the accuracy (run_length.h).
 const NumberRange kDuration{0.0, true, std::numeric_limits<double>::infinity(), true, false, "s"};
 // The bound of the scene key render.fps (INTERFACE.md).
+const NumberRange kRoughnessScale{0.0, false, 100.0, false, false, "display scale"};
 const NumberRange kFps{0.0, true, 1000.0, false, false, "frames per second"};
 
 }  // namespace
@@ -100,6 +101,12 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       ->type_name("C");
   c.render->add_option("--size", c.render_options.size, "frame size (default: render.size)")
       ->type_name("WxH");
+  c.render
+      ->add_option("--roughness-scale", c.render_roughness_scale,
+                   "exaggerates the drawn rugosity detail (display only; default: "
+                   "render.roughness_scale, 1)")
+      ->check(number_in(kRoughnessScale))
+      ->type_name("X");
   c.render->add_option("--fps", c.render_fps, "frames per second (default: render.fps)")
       ->check(number_in(kFps))
       ->type_name("FPS");
@@ -286,6 +293,9 @@ void finish_parse(CommandLine& c) {
   if (c.simulate->count("--duration") > 0) c.sim.duration = c.duration;
   if (c.simulate->count("--fps") > 0) c.sim.fps = c.fps;
   if (c.render->count("--fps") > 0) c.render_options.fps = c.render_fps;
+  if (c.render->count("--roughness-scale") > 0) {
+    c.render_options.roughness_scale = c.render_roughness_scale;
+  }
   if (c.render->count("--duration") > 0) c.render_options.duration = c.render_duration;
   if (c.render->count("--gl-threads") > 0) c.render_options.gl_threads = c.gl_threads;
   if (c.render->count("--overlay") > 0) {

@@ -33,7 +33,7 @@ struct CommandLine {
 
   // Raw values of options whose absence means "the scene's value" (see finish_parse).
   double duration = 0.0, fps = 0.0;
-  double render_fps = 0.0, render_duration = 0.0;
+  double render_fps = 0.0, render_duration = 0.0, render_roughness_scale = 1.0;
   std::vector<std::string> overlays;
   int gl_threads = 0;
   bool no_contacts = false;

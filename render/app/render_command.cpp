@@ -345,6 +345,7 @@ int run_render(const RenderOptions& o) {
   Plan plan;
   try {
     if (!o.camera.empty()) loaded->scene.render.camera = camera_option(o.camera);
+    if (o.roughness_scale) loaded->scene.render.roughness_scale = *o.roughness_scale;
     plan = make_plan(o, *loaded);
   } catch (const UsageError& e) {
     fmt::print(stderr, "error: {}\n", e.what());

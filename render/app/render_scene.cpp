@@ -94,6 +94,13 @@ double scene_outline_px(const Scene& scene) {
   return scene.render.outline_width > 0.0 ? scene.render.outline_width : 1.5;
 }
 
+DetailSettings scene_detail(const Scene& scene) {
+  DetailSettings detail;
+  detail.roughness_scale = scene.render.roughness_scale;
+  detail.correlation_length = scene.render.roughness_length;
+  return detail;
+}
+
 FrameText frame_text(const Scene& scene) {
   const RenderSpec& r = scene.render;
   FrameText text;

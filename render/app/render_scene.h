@@ -33,6 +33,8 @@ Theme scene_theme(const Scene& scene);
 Rgba scene_background(const Scene& scene);
 // render.outline.width: px at 720 lines.
 double scene_outline_px(const Scene& scene);
+// render.roughness_scale and render.roughness_length as detail settings (pixel size unset).
+DetailSettings scene_detail(const Scene& scene);
 
 // render.title, caption, clock and scale_bar as the text painter takes them.
 FrameText frame_text(const Scene& scene);

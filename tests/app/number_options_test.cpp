@@ -64,6 +64,7 @@ std::vector<NumericOption> table() {
   rows.push_back({"simulate", "--fps", {}, "1e309"});
   rows.push_back({"render", "--duration", {}, "3.4e6"});
   rows.push_back({"render", "--fps", {}, "1e309"});
+  rows.push_back({"render", "--roughness-scale", {"0", "1e-300"}, "1e309"});
   rows.push_back({"render", "--crf", {"0"}, kPast64Bits});
   rows.push_back({"render", "--strip", {}, kPast64Bits});
   rows.push_back({"render", "--frame", {"0"}, kPast64Bits});
