@@ -122,6 +122,34 @@ TEST_F(RenderCommand, StillAndGifAreKeptWithoutYAndReplacedWithIt) {
   EXPECT_EQ(listing(dir_ / "out"), (std::vector<std::string>{"clip.gif", "still.png"}));
 }
 
+// --roughness-scale and render.roughness_scale: 0 draws smooth outlines, a larger scale changes
+// more pixels, the option and the key give the same frame; the simulation never sees them (the
+// same trajectory with and without the key).
+TEST_F(RenderCommand, RoughnessScaleChangesTheDrawingAndNotTheSimulation) {
+  const fs::path scene = fixed_camera_scene();
+  const Image smooth = frame(scene.string(), 30, {"--roughness-scale", "0"});
+  const Image normal = frame(scene.string(), 30, {});
+  const Image rough = frame(scene.string(), 30, {"--roughness-scale", "3"});
+  const std::size_t changed = rugosim::testing::differing_pixels(smooth, normal);
+  EXPECT_GT(changed, 100u);
+  EXPECT_GT(rugosim::testing::differing_pixels(smooth, rough), changed);
+  const fs::path keyed = fixed_camera_scene(R"([], "roughness_scale": 3)");
+  EXPECT_EQ(rugosim::testing::differing_pixels(frame(keyed.string(), 30, {}), rough), 0u);
+
+  std::vector<std::string> trajectories;
+  for (const fs::path& s : {scene, keyed}) {
+    const fs::path csv = dir_ / (s.stem().string() + ".csv");
+    const auto r =
+        rugosim::testing::run_command_line(rugosim::testing::program() + " simulate " + s.string() +
+                                               " --duration 0.5 --trajectory " + csv.string(),
+                                           dir_ / "simulate.err");
+    ASSERT_EQ(r.exit_code, 0) << r.stderr_text;
+    trajectories.push_back(read_text(csv));
+  }
+  EXPECT_FALSE(trajectories[0].empty());
+  EXPECT_EQ(trajectories[0], trajectories[1]);
+}
+
 TEST_F(RenderCommand, OutputsThatWouldHoldAnotherFormatThanTheirNameExit2AndWriteNothing) {
   const std::string out = (dir_ / "out").string();
   expect_usage_errors({
