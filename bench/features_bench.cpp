@@ -16,11 +16,17 @@
 //                         built on the CPU every frame (and every frame drawn whole).
 //   static/<variant>      the same frames. Baseline: incremental redraw (a still floor and
 //                         walls are not drawn again). "full_redraw": every frame drawn whole.
+//   text/<variant>        the same frames read back, with the frame text painter the render
+//                         command uses. Baseline: no text asked for (the painter opens no
+//                         font and returns at once). "no_painter": no painter at all, so a
+//                         ratio of 1 shows that a scene without text pays nothing for it;
+//                         "all": a title, a caption, the clock and a scale bar, what text costs.
 //   presets/<variant>     simulating figure12a (5 s) at each accuracy preset, against
 //                         precise as the baseline (issue 8's target: draft at most 0.1 of it).
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +40,7 @@
 #include "render/app/render_scene.h"
 #include "render/draw/scene_renderer.h"
 #include "render/gl/gl_context.h"
+#include "render/text/frame_text.h"
 #include "support/pile_scene.h"
 
 namespace rugosim {
@@ -154,7 +161,9 @@ const Clip& figure12a() {
   return clip;
 }
 
-void draw(benchmark::State& state, Overlays overlays, bool incremental) {
+// `text`: painted over each frame read back (nullopt: no painter at all).
+void draw(benchmark::State& state, Overlays overlays, bool incremental,
+          std::optional<FrameText> text) {
   const Clip& c = figure12a();
   std::unique_ptr<GlContext> context = GlContext::create(GlBackend::kOsmesa, 1280, 720);
   RenderSettings settings;
@@ -163,13 +172,26 @@ void draw(benchmark::State& state, Overlays overlays, bool incremental) {
   settings.overlays = overlays;
   settings.incremental = incremental;
   SceneRenderer renderer(*context, app::body_looks(c.scene, *c.world), settings);
+  std::optional<FrameTextPainter> painter;
+  if (text) painter.emplace(*text);
   Image image;
   std::size_t k = 0;
   for (auto _ : state) {
-    renderer.draw(c.frames[k++ % kFrames]);
+    const FrameSnapshot& frame = c.frames[k++ % kFrames];
+    renderer.draw(frame);
     renderer.read(image);
+    if (painter) painter->paint(image, frame.time, settings.camera.pixel_size());
     benchmark::DoNotOptimize(image.rgba.data());
   }
+}
+
+FrameText all_text() {
+  FrameText text;
+  text.title = "Eight rough rocks";
+  text.caption = "rugosim: figure 12a of the paper";
+  text.clock = true;
+  text.scale_bar = true;
+  return text;
 }
 
 void register_all() {
@@ -178,13 +200,24 @@ void register_all() {
   RegisterBenchmark("tolerance/varying", tolerance, false)->Unit(benchmark::kMillisecond);
   RegisterBenchmark("sleep/baseline", sleep, true)->Unit(benchmark::kMicrosecond);
   RegisterBenchmark("sleep/off", sleep, false)->Unit(benchmark::kMicrosecond);
-  RegisterBenchmark("overlays/baseline", draw, Overlays{}, true)->Unit(benchmark::kMillisecond);
-  RegisterBenchmark("overlays/rugosity", draw, Overlays{true, false, false}, true)
+  RegisterBenchmark("overlays/baseline", draw, Overlays{}, true, std::optional<FrameText>())
       ->Unit(benchmark::kMillisecond);
-  RegisterBenchmark("overlays/contacts_velocity", draw, Overlays{false, true, true}, true)
+  RegisterBenchmark("overlays/rugosity", draw, Overlays{true, false, false}, true,
+                    std::optional<FrameText>())
       ->Unit(benchmark::kMillisecond);
-  RegisterBenchmark("static/baseline", draw, Overlays{}, true)->Unit(benchmark::kMillisecond);
-  RegisterBenchmark("static/full_redraw", draw, Overlays{}, false)->Unit(benchmark::kMillisecond);
+  RegisterBenchmark("overlays/contacts_velocity", draw, Overlays{false, true, true}, true,
+                    std::optional<FrameText>())
+      ->Unit(benchmark::kMillisecond);
+  RegisterBenchmark("static/baseline", draw, Overlays{}, true, std::optional<FrameText>())
+      ->Unit(benchmark::kMillisecond);
+  RegisterBenchmark("static/full_redraw", draw, Overlays{}, false, std::optional<FrameText>())
+      ->Unit(benchmark::kMillisecond);
+  RegisterBenchmark("text/baseline", draw, Overlays{}, true, std::optional<FrameText>(FrameText{}))
+      ->Unit(benchmark::kMillisecond);
+  RegisterBenchmark("text/no_painter", draw, Overlays{}, true, std::optional<FrameText>())
+      ->Unit(benchmark::kMillisecond);
+  RegisterBenchmark("text/all", draw, Overlays{}, true, std::optional<FrameText>(all_text()))
+      ->Unit(benchmark::kMillisecond);
   RegisterBenchmark("presets/baseline", preset, std::string("precise"))
       ->Unit(benchmark::kMillisecond);
   RegisterBenchmark("presets/normal", preset, std::string("normal"))->Unit(benchmark::kMillisecond);
