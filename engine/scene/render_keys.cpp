@@ -188,19 +188,31 @@ void read_render(Reader& r, const json& v, const std::string& path, RenderSpec& 
       render.camera.automatic = true;
     } else if (camera.is_object()) {
       render.camera.automatic = false;
-      r.check_keys(camera, at, {"center", "height"});
-      if (camera.contains("center")) {
+      r.check_keys(camera, at, {"center", "height", "follow"});
+      const bool follows = camera.contains("follow");
+      if (follows) {
+        r.string(camera["follow"], child(at, "follow"), render.camera.follow);
+        if (camera["follow"].is_string() && render.camera.follow.empty()) {
+          r.error(child(at, "follow"), "expected a body's name, got \"\"");
+        }
+        if (camera.contains("center")) {
+          r.error(child(at, "center"), "a camera that follows a body has no fixed centre");
+        }
+      } else if (camera.contains("center")) {
         r.vec2(camera["center"], child(at, "center"), render.camera.center);
       } else {
-        r.error(child(at, "center"), "missing required key \"center\"");
+        r.error(child(at, "center"), "missing required key \"center\" (or \"follow\")");
       }
       if (camera.contains("height")) {
         r.positive(camera["height"], child(at, "height"), render.camera.height, "m");
-      } else {
+      } else if (!follows) {
         r.error(child(at, "height"), "missing required key \"height\"");
       }
     } else {
-      r.error(at, "expected \"auto\" or {\"center\": [x, y], \"height\": h}, got " + shown(camera));
+      r.error(at,
+              "expected \"auto\", {\"center\": [x, y], \"height\": h} or {\"follow\": "
+              "BODY}, got " +
+                  shown(camera));
     }
   }
   if (v.contains("background")) {

@@ -68,7 +68,9 @@ struct BodySpec {
 struct CameraSpec {
   bool automatic = true;       // "auto": fit every body over the whole clip
   Vec2 center = Vec2::Zero();  // m
-  double height = 0.0;         // m, of the visible world
+  double height = 0.0;         // m, of the visible world; with `follow`, 0 for 4 × its size
+  // A body's name: the view is centred on its centre of mass in every frame (not automatic).
+  std::string follow;
 };
 
 // render.background for frames without a background (alpha 0 where no body is): PNG, GIF,

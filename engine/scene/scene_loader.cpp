@@ -430,6 +430,25 @@ std::pair<int, int> line_column(std::string_view text, std::size_t offset) {
 
 }  // namespace
 
+std::optional<std::size_t> find_body(const Scene& scene, const std::string& name) {
+  for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
+    if (scene.bodies[i].name == name) return i;
+  }
+  return std::nullopt;
+}
+
+std::string unknown_body_message(const Scene& scene, const std::string& name) {
+  std::vector<std::string> names;
+  for (const BodySpec& body : scene.bodies) {
+    if (!body.name.empty()) names.push_back(body.name);
+  }
+  std::string message = "no body named \"" + name + "\"";
+  const std::string suggestion = closest_match(name, names);
+  if (!suggestion.empty()) message += " (did you mean \"" + suggestion + "\"?)";
+  if (names.empty()) message += "; the scene's bodies have no \"name\"";
+  return message;
+}
+
 std::string closest_match(std::string_view word, const std::vector<std::string>& candidates) {
   std::string best;
   std::size_t best_distance = std::numeric_limits<std::size_t>::max();
@@ -524,6 +543,10 @@ SceneLoad parse_scene(std::string_view text, const std::string& file) {
     }
   }
   if (root.contains("render")) read_render(r, root["render"], "/render", scene.render);
+  const std::string& followed = scene.render.camera.follow;
+  if (!followed.empty() && !find_body(scene, followed)) {
+    r.error("/render/camera/follow", unknown_body_message(scene, followed));
+  }
   return load;
 }
 

@@ -5,6 +5,8 @@
 // crossing at t = 0) need the bodies built: scene_world.h does them.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,5 +33,10 @@ SceneLoad parse_scene(std::string_view text, const std::string& file);
 // typo (at most a third of the word's length, rounded up, and at least 1 edit); empty
 // otherwise.
 std::string closest_match(std::string_view word, const std::vector<std::string>& candidates);
+
+// The index of the body called `name`, if any.
+std::optional<std::size_t> find_body(const Scene& scene, const std::string& name);
+// "no body named "x" (did you mean "y"?)": for a name that find_body does not find.
+std::string unknown_body_message(const Scene& scene, const std::string& name);
 
 }  // namespace rugosim

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/dynamics/frame_snapshot.h"
+#include "engine/scene/scene_loader.h"
 #include "render/app/render_scene.h"
 
 namespace rugosim::app {
@@ -39,9 +40,14 @@ class ContextRenderer final : public FrameRenderer {
 // render thread, and the stored snapshots are handed out.
 class ClipSource {
  public:
+  // `follow`: the body every snapshot is centred on (centred_on), for a following camera.
   ClipSource(World& world, const ClipPlan& plan, std::optional<Camera> camera,
-             const std::atomic<bool>* interrupted)
-      : world_(world), plan_(plan), automatic_(!camera), interrupted_(interrupted) {
+             std::optional<std::size_t> follow, const std::atomic<bool>* interrupted)
+      : world_(world),
+        plan_(plan),
+        automatic_(!camera),
+        follow_(follow),
+        interrupted_(interrupted) {
     // Every step polls the flag: a run crawling through short steps stops within one.
     world_.set_stop_flag(interrupted);
     if (camera) camera_.set_value(camera);
@@ -72,6 +78,7 @@ class ClipSource {
     }
     FrameSnapshot snapshot = take_snapshot(world_, frame);
     world_.clear_events();
+    if (follow_) return centred_on(std::move(snapshot), *follow_);
     return snapshot;
   }
 
@@ -97,6 +104,7 @@ class ClipSource {
   World& world_;
   const ClipPlan& plan_;
   bool automatic_;
+  std::optional<std::size_t> follow_;
   const std::atomic<bool>* interrupted_;
   std::promise<std::optional<Camera>> camera_;
   std::future<std::optional<Camera>> camera_future_ = camera_.get_future();
@@ -131,7 +139,12 @@ PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
   settings.detail = scene_detail(loaded.scene);
   settings.anti_aliasing = plan.anti_aliasing;
   settings.overlays = plan.overlays;
-  ClipSource source(world, plan, scene_camera(loaded.scene, plan.width, plan.height), interrupted);
+  std::optional<Camera> fixed_camera = scene_camera(loaded.scene, plan.width, plan.height);
+  const CameraSpec& spec = loaded.scene.render.camera;
+  const std::optional<std::size_t> follow =
+      spec.follow.empty() ? std::nullopt : find_body(loaded.scene, spec.follow);
+  if (follow) fixed_camera = follow_camera(world, *follow, spec.height, plan.width, plan.height);
+  ClipSource source(world, plan, fixed_camera, follow, interrupted);
   // Made before the threads start: the simulation thread moves the bodies.
   const std::vector<BodyLook> looks = body_looks(loaded.scene, world);
 

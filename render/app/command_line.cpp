@@ -96,7 +96,8 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       ->type_name("K");
   c.render
       ->add_option("--camera", c.render_options.camera,
-                   "auto, or CX,CY,HEIGHT in metres: the view's centre and height (default: "
+                   "auto; CX,CY,HEIGHT in metres: the view's centre and height; or "
+                   "follow:BODY[,HEIGHT]: centred on that body in every frame (default: "
                    "render.camera)")
       ->type_name("C");
   c.render->add_option("--size", c.render_options.size, "frame size (default: render.size)")
@@ -189,6 +190,8 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       "  rugosim render scenes/figure12a.json -o out/grid.png --strip 6 --columns 3 "
       "--strip-labels\n"
       "  rugosim render scenes/figure12a.json -o out/close.png --frame 60 --camera 0,0.5,1.2\n"
+      "  rugosim render scenes/figure12a.json -o out/rock.mp4 --camera follow:rock_3,1.2\n"
+      "  rugosim render scenes/figure12a.json -o out/slide.png --frame 90 --roughness-scale 3\n"
       "With render.background \"transparent\" in the scene, PNG, GIF, WebM, MOV and WebP keep "
       "alpha (an MP4 is refused). An existing OUT is kept unless -y is given. On Ctrl-C the frame "
       "in hand is finished, the output is closed (a playable MP4; a complete GIF, WebM, MOV or "

@@ -39,9 +39,9 @@ struct RenderOptions {
                        // out/f_%04d.png, or one PNG (--frame: a still, --strip: a strip)
   std::string format;  // "mp4", "gif", "webm", "mov", "webp" or "png"; empty: from the name
   std::string frames;  // "A:B", inclusive; empty: the whole clip
-  std::optional<std::size_t> frame;       // --frame K: one still PNG of frame K
-  std::string camera;                     // --camera auto | CX,CY,HEIGHT; empty: render.camera
-  std::string size;                       // "WxH"; empty: render.size
+  std::optional<std::size_t> frame;  // --frame K: one still PNG of frame K
+  std::string camera;  // --camera auto | CX,CY,HEIGHT | follow:BODY[,HEIGHT]; empty: render.camera
+  std::string size;    // "WxH"; empty: render.size
   std::optional<double> roughness_scale;  // replaces render.roughness_scale
   std::optional<double> fps;
   std::optional<double> duration;

@@ -7,11 +7,13 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <sys/stat.h>
 #include <vector>
 
 #include <fmt/core.h>
 
+#include "engine/scene/scene_loader.h"
 #include "render/app/clip_render.h"
 #include "render/app/commands.h"
 #include "render/app/crossing_report.h"
@@ -126,10 +128,31 @@ Output output_kind(const RenderOptions& o) {
       o.output));
 }
 
-// --camera: "auto", or "CX,CY,HEIGHT" in metres (the scene's render.camera keys).
-CameraSpec camera_option(const std::string& text) {
+// --camera: "auto", "CX,CY,HEIGHT" in metres, or "follow:BODY[,HEIGHT]" (the scene's
+// render.camera keys). A followed body must be one of `scene`'s.
+CameraSpec camera_option(const std::string& text, const Scene& scene) {
   CameraSpec camera;
   if (text == "auto") return camera;
+  constexpr std::string_view kFollow = "follow:";
+  if (text.starts_with(kFollow)) {
+    const std::string rest = text.substr(kFollow.size());
+    const std::size_t comma = rest.rfind(',');
+    camera.automatic = false;
+    camera.follow = rest.substr(0, comma);
+    if (comma != std::string::npos) {
+      const std::optional<double> height = parse_number(rest.substr(comma + 1), false);
+      if (!height || !(*height > 0.0)) {
+        throw UsageError(fmt::format(
+            "--camera: expected follow:BODY or follow:BODY,HEIGHT (HEIGHT > 0 m), got \"{}\"",
+            text));
+      }
+      camera.height = *height;
+    }
+    if (!find_body(scene, camera.follow)) {
+      throw UsageError("--camera: " + unknown_body_message(scene, camera.follow));
+    }
+    return camera;
+  }
   std::vector<double> numbers;
   std::size_t start = 0;
   for (;;) {
@@ -142,8 +165,8 @@ CameraSpec camera_option(const std::string& text) {
   }
   if (numbers.size() != 3 || !(numbers[2] > 0.0)) {
     throw UsageError(
-        fmt::format("--camera: expected auto or CX,CY,HEIGHT in metres (HEIGHT > 0, e.g. "
-                    "0,1.1,2.6), got \"{}\"",
+        fmt::format("--camera: expected auto, CX,CY,HEIGHT in metres (HEIGHT > 0, e.g. "
+                    "0,1.1,2.6) or follow:BODY[,HEIGHT], got \"{}\"",
                     text));
   }
   camera.automatic = false;
@@ -344,7 +367,9 @@ int run_render(const RenderOptions& o) {
   if (!loaded) return kExitUsage;
   Plan plan;
   try {
-    if (!o.camera.empty()) loaded->scene.render.camera = camera_option(o.camera);
+    if (!o.camera.empty()) {
+      loaded->scene.render.camera = camera_option(o.camera, loaded->scene);
+    }
     if (o.roughness_scale) loaded->scene.render.roughness_scale = *o.roughness_scale;
     plan = make_plan(o, *loaded);
   } catch (const UsageError& e) {

@@ -1,5 +1,6 @@
 #include "render/app/render_scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/core/random.h"
@@ -38,13 +39,38 @@ std::vector<BodyLook> body_looks(const Scene& scene, const World& world) {
 }
 
 std::optional<Camera> scene_camera(const Scene& scene, int width_px, int height_px) {
-  if (scene.render.camera.automatic) return std::nullopt;
+  if (scene.render.camera.automatic || !scene.render.camera.follow.empty()) return std::nullopt;
   Camera camera;
   camera.center = scene.render.camera.center;
   camera.height = scene.render.camera.height;
   camera.width_px = width_px;
   camera.height_px = height_px;
   return camera;
+}
+
+Camera follow_camera(const World& world, std::size_t body, double height, int width_px,
+                     int height_px) {
+  Camera camera;
+  camera.width_px = width_px;
+  camera.height_px = height_px;
+  if (height > 0.0) {
+    camera.height = height;
+  } else {
+    // The curve's hull in its own frame: the body's size whatever its turn.
+    const Vec2 extent = world.body(body).curve().hull_bounds().extent();
+    camera.height = 4.0 * std::max(extent.x(), extent.y());
+  }
+  return camera;
+}
+
+FrameSnapshot centred_on(FrameSnapshot frame, std::size_t body) {
+  if (body >= frame.bodies.size()) return frame;
+  const Transform2 shift(0.0, -frame.bodies[body].placement.translation());
+  for (BodyPose& pose : frame.bodies)
+    pose.placement = shift * pose.placement;
+  for (ContactEvent& event : frame.events)
+    event.point = shift.apply(event.point);
+  return frame;
 }
 
 Camera fit_clip_camera(const World& world, const std::vector<FrameSnapshot>& frames, int width_px,

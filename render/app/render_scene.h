@@ -23,8 +23,16 @@ namespace rugosim::app {
 // σ = λ / q per segment of the body's stored curve, a detail seed from the scene's seed.
 std::vector<BodyLook> body_looks(const Scene& scene, const World& world);
 
-// The explicit camera of the scene's render.camera, or nullopt for "auto".
+// The explicit camera of the scene's render.camera, or nullopt for "auto" (and for "follow",
+// whose camera is follow_camera's).
 std::optional<Camera> scene_camera(const Scene& scene, int width_px, int height_px);
+// The camera of render.camera.follow: centred on the origin, where centred_on() puts the body,
+// `height` m high, or 4 × the body's larger side when `height` is 0.
+Camera follow_camera(const World& world, std::size_t body, double height, int width_px,
+                     int height_px);
+// The frame moved so that `body`'s centre of mass is at the origin: every placement and event
+// point shifted by the same offset (exactly: a translation composed with each placement).
+FrameSnapshot centred_on(FrameSnapshot frame, std::size_t body);
 
 // render.theme (palette.h).
 Theme scene_theme(const Scene& scene);

@@ -105,4 +105,53 @@ TEST_F(RenderCommand, CameraOptionFramesAsTheScenesCameraKeys) {
   }
 }
 
+// The pixel at the frame's centre, RGBA.
+std::array<std::uint8_t, 4> centre_pixel(const Image& image) {
+  const auto width = static_cast<std::size_t>(image.width);
+  const std::size_t i = 4 * (static_cast<std::size_t>(image.height / 2) * width + width / 2);
+  return {image.rgba[i], image.rgba[i + 1], image.rgba[i + 2], image.rgba[i + 3]};
+}
+
+// --camera follow:BODY[,HEIGHT] and render.camera {"follow", "height"}: the same frames; the
+// followed rock's centre of mass stays at the frame's centre (its fill there in every frame)
+// while the picture around it changes; an unknown body exits 2 with a suggestion.
+TEST_F(RenderCommand, FollowingCameraKeepsTheBodyAtTheCentre) {
+  std::string text = rugosim::testing::read_text(figure12a());
+  const std::string automatic = R"("camera": "auto")";
+  ASSERT_NE(text.find(automatic), std::string::npos);
+  text.replace(text.find(automatic), automatic.size(),
+               R"("camera": {"follow": "rock_3", "height": 1.2})");
+  const std::string keyed = (dir_ / "follow.json").string();
+  rugosim::testing::write_text(keyed, text);
+  std::vector<Image> frames;
+  for (const std::size_t k : {0u, 40u, 120u}) {
+    frames.push_back(frame(figure12a(), k, {"--camera", "follow:rock_3,1.2"}));
+    ASSERT_FALSE(frames.back().rgba.empty());
+    EXPECT_EQ(differing_pixels(frames.back(), frame(keyed, k, {})), 0u) << k;
+  }
+  EXPECT_EQ(centre_pixel(frames[0]), centre_pixel(frames[1]));
+  EXPECT_EQ(centre_pixel(frames[0]), centre_pixel(frames[2]));
+  EXPECT_GT(differing_pixels(frames[0], frames[2]), 1000u) << "the rest of the scene moves";
+  // Without a height: four times the rock's size, so it covers a small part of the frame.
+  const Image wide = frame(figure12a(), 40, {"--camera", "follow:rock_3"});
+  std::size_t same = 0;
+  for (std::size_t i = 0; i < wide.rgba.size(); i += 4) {
+    same += std::equal(wide.rgba.begin() + static_cast<std::ptrdiff_t>(i),
+                       wide.rgba.begin() + static_cast<std::ptrdiff_t>(i + 4),
+                       centre_pixel(wide).begin())
+                ? 1u
+                : 0u;
+  }
+  EXPECT_EQ(centre_pixel(wide), centre_pixel(frames[1]));
+  const auto pixels = static_cast<double>(wide.rgba.size() / 4);
+  EXPECT_LT(static_cast<double>(same) / pixels, 0.15);
+  EXPECT_GT(static_cast<double>(same) / pixels, 0.01);
+  const Outcome r = run({figure12a(), "-o", (dir_ / "out" / "x.png").string(), "--frame", "1",
+                         "--camera", "follow:rock3"});
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("no body named \"rock3\" (did you mean \"rock_3\"?)"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "x.png"));
+}
+
 }  // namespace
