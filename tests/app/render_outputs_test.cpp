@@ -248,6 +248,31 @@ TEST_P(RenderTransparent, ClipKeepsTheFramesAndTheirAlpha) {
   const double mean = sum / static_cast<double>(png.rgba.size());
   EXPECT_LT(mean, 2.0);
   std::printf("%s: mean difference %.3f levels\n", GetParam().c_str(), mean);
+  // Alpha: within 8 levels of 0 wherever the still is transparent within 4 px, and of 255
+  // wherever it is opaque within 4 px: well away from the anti-aliased edges, beside which
+  // VP9's 8×8 transforms ring.
+  const int w = png.width;
+  int worst_clear = 0, worst_opaque = 255;
+  constexpr int kAway = 4;
+  for (int y = kAway; y + kAway < png.height; ++y) {
+    for (int x = kAway; x + kAway < w; ++x) {
+      bool clear = true, opaque = true;
+      for (int dy = -kAway; dy <= kAway; ++dy) {
+        for (int dx = -kAway; dx <= kAway; ++dx) {
+          const std::uint8_t a = png.rgba[4 * static_cast<std::size_t>((y + dy) * w + x + dx) + 3];
+          clear = clear && a == 0;
+          opaque = opaque && a == 255;
+        }
+      }
+      const int decoded = frames[6].rgba[4 * static_cast<std::size_t>(y * w + x) + 3];
+      if (clear) worst_clear = std::max(worst_clear, decoded);
+      if (opaque) worst_opaque = std::min(worst_opaque, decoded);
+    }
+  }
+  EXPECT_LE(worst_clear, 8) << GetParam();
+  EXPECT_GE(worst_opaque, 247) << GetParam();
+  std::printf("%s: alpha at most %d where clear, at least %d where opaque\n", GetParam().c_str(),
+              worst_clear, worst_opaque);
 }
 
 INSTANTIATE_TEST_SUITE_P(Formats, RenderTransparent, ::testing::Values("webm", "mov", "webp"));
