@@ -16,6 +16,8 @@ pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)
 pkg_check_modules(PNG REQUIRED IMPORTED_TARGET libpng)
 # Text in frames: FreeType (the font is fonts-dejavu-core's DejaVu Sans).
 pkg_check_modules(FREETYPE REQUIRED IMPORTED_TARGET freetype2)
+# Vector stills (SVG and PDF): cairo's surfaces, with the same FreeType face for text.
+pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo cairo-svg cairo-pdf cairo-ft)
 pkg_check_modules(LIBAV REQUIRED IMPORTED_TARGET libavcodec libavformat libavfilter libavutil
                   libswscale)
 

@@ -16,8 +16,12 @@ packages=(
   libavcodec-dev libavformat-dev libavfilter-dev libavutil-dev libswscale-dev
   # text in frames: FreeType and the DejaVu fonts
   libfreetype-dev fonts-dejavu-core
+  # vector stills (render -o still.svg|pdf): cairo
+  libcairo2-dev
   # tests and benchmarks (libwebp-dev: the tests decode animated WebP with libwebp's demux API)
   libgtest-dev libgmock-dev libbenchmark-dev libwebp-dev
+  # the vector stills' tests: an XML parser and the SVG and PDF rasterisers they compare with
+  libxml2-utils librsvg2-bin poppler-utils
   # the pile benchmark's competitor
   libbox2d-dev
   # the render benchmark's baseline: the ffmpeg command

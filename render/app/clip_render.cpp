@@ -129,24 +129,55 @@ void choose_rasteriser_threads(const std::optional<int>& threads) {
   }
 }
 
-PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
-                           const std::function<void(const Image&, std::size_t)>& consume,
-                           const std::atomic<bool>* interrupted, std::string* renderer) {
-  World& world = *loaded.world;
+namespace {
+
+// The scene's look for the clip; the camera is set when it is known.
+RenderSettings clip_settings(const LoadedScene& loaded, const ClipPlan& plan) {
   RenderSettings settings;
   settings.background = scene_background(loaded.scene);
   settings.outline_px = scene_outline_px(loaded.scene);
   settings.detail = scene_detail(loaded.scene);
   settings.anti_aliasing = plan.anti_aliasing;
   settings.overlays = plan.overlays;
+  return settings;
+}
+
+// The clip's snapshots with the scene's camera: fixed, following a body, or automatic.
+ClipSource clip_source(LoadedScene& loaded, const ClipPlan& plan,
+                       const std::atomic<bool>* interrupted) {
+  World& world = *loaded.world;
   std::optional<Camera> fixed_camera = scene_camera(loaded.scene, plan.width, plan.height);
   const CameraSpec& spec = loaded.scene.render.camera;
   const std::optional<std::size_t> follow =
       spec.follow.empty() ? std::nullopt : find_body(loaded.scene, spec.follow);
   if (follow) fixed_camera = follow_camera(world, *follow, spec.height, plan.width, plan.height);
-  ClipSource source(world, plan, fixed_camera, follow, interrupted);
+  return ClipSource(world, plan, fixed_camera, follow, interrupted);
+}
+
+}  // namespace
+
+std::optional<StillFrame> simulate_still(LoadedScene& loaded, const ClipPlan& plan,
+                                         const std::atomic<bool>* interrupted) {
+  StillFrame still;
+  still.settings = clip_settings(loaded, plan);
+  still.looks = body_looks(loaded.scene, *loaded.world);
+  ClipSource source = clip_source(loaded, plan, interrupted);
+  std::optional<FrameSnapshot> frame = source.next();
+  const std::optional<Camera> camera = source.camera();
+  if (!frame || !camera) return std::nullopt;
+  still.frame = std::move(*frame);
+  still.settings.camera = *camera;
+  still.text = frame_text(loaded.scene, still.looks, plan.overlays);
+  return still;
+}
+
+PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
+                           const std::function<void(const Image&, std::size_t)>& consume,
+                           const std::atomic<bool>* interrupted, std::string* renderer) {
+  const RenderSettings settings = clip_settings(loaded, plan);
+  ClipSource source = clip_source(loaded, plan, interrupted);
   // Made before the threads start: the simulation thread moves the bodies.
-  const std::vector<BodyLook> looks = body_looks(loaded.scene, world);
+  const std::vector<BodyLook> looks = body_looks(loaded.scene, *loaded.world);
 
   PipelineStages stages;
   stages.next_snapshot = [&] { return source.next(); };

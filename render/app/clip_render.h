@@ -15,6 +15,7 @@
 #include "render/gl/gl_context.h"
 #include "render/image.h"
 #include "render/pipeline/render_pipeline.h"
+#include "render/text/frame_text.h"
 
 namespace rugosim::app {
 
@@ -41,5 +42,17 @@ void choose_rasteriser_threads(const std::optional<int>& threads);
 PipelineResult render_clip(LoadedScene& loaded, const ClipPlan& plan,
                            const std::function<void(const Image&, std::size_t)>& consume,
                            const std::atomic<bool>* interrupted, std::string* renderer = nullptr);
+
+// One frame, plan.frames[0], as a vector writer needs it (render/sinks/vector_still.h): the
+// snapshot, the looks and the settings (camera included) the raster path would draw it with,
+// and its text. nullopt when `interrupted` stopped the simulation first.
+struct StillFrame {
+  FrameSnapshot frame;
+  std::vector<BodyLook> looks;
+  RenderSettings settings;
+  FrameText text;
+};
+std::optional<StillFrame> simulate_still(LoadedScene& loaded, const ClipPlan& plan,
+                                         const std::atomic<bool>* interrupted);
 
 }  // namespace rugosim::app

@@ -83,15 +83,15 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       ->type_name("OUT");
   c.render
       ->add_option("--format", c.render_options.format,
-                   "mp4, gif, webm, mov, webp or png (default: from OUT's extension)")
-      ->check(CLI::IsMember({"mp4", "gif", "webm", "mov", "webp", "png"}));
+                   "mp4, gif, webm, mov, webp, png, svg or pdf (default: from OUT's extension)")
+      ->check(CLI::IsMember({"mp4", "gif", "webm", "mov", "webp", "png", "svg", "pdf"}));
   c.render
       ->add_option("--frames", c.render_options.frames,
                    "frames A:B, inclusive (default: 0 to duration × fps)")
       ->type_name("A:B");
   c.render
       ->add_option("--frame", c.render_options.frame,
-                   "one still: frame K (0 to duration × fps) as one PNG")
+                   "one still: frame K (0 to duration × fps) as one PNG, SVG or PDF")
       ->check(number_in({0, false, 1e9, false, true, "frame"}))
       ->type_name("K");
   c.render
@@ -185,6 +185,8 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       "  rugosim render scenes/figure12b.json -o out/strip.png --strip 6 --size 480x360\n"
       "  rugosim render scenes/figure12a.json -o out/figure12a.gif --size 480x270 --fps 25\n"
       "  rugosim render scenes/figure12a.json -o out/still.png --frame 90 --size 1920x1080\n"
+      "  rugosim render scenes/figure12a_slide.json -o out/figure.pdf --frame 90   (vector; "
+      "or .svg)\n"
       "  rugosim render scenes/figure12a_slide.json -o out/slide.webm   (VP9; .mov: ProRes 4444, "
       ".webp: animated WebP)\n"
       "  rugosim render scenes/figure12a.json -o out/grid.png --strip 6 --columns 3 "
@@ -192,7 +194,8 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       "  rugosim render scenes/figure12a.json -o out/close.png --frame 60 --camera 0,0.5,1.2\n"
       "  rugosim render scenes/figure12a.json -o out/rock.mp4 --camera follow:rock_3,1.2\n"
       "  rugosim render scenes/figure12a.json -o out/slide.png --frame 90 --roughness-scale 3\n"
-      "With render.background \"transparent\" in the scene, PNG, GIF, WebM, MOV and WebP keep "
+      "With render.background \"transparent\" in the scene, PNG, GIF, WebM, MOV, WebP, SVG and PDF "
+      "keep "
       "alpha (an MP4 is refused). An existing OUT is kept unless -y is given. On Ctrl-C the frame "
       "in hand is finished, the output is closed (a playable MP4; a complete GIF, WebM, MOV or "
       "WebP) and the exit code is 130.");

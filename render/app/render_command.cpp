@@ -1,5 +1,6 @@
 #include <cctype>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -31,6 +32,7 @@
 #include "render/sinks/mp4_sink.h"
 #include "render/sinks/png_io.h"
 #include "render/sinks/png_sequence_sink.h"
+#include "render/sinks/vector_still.h"
 #include "render/text/frame_text.h"
 
 namespace rugosim::app {
@@ -38,15 +40,17 @@ namespace {
 
 // What -o (and --format) ask for: a clip (MP4, or GIF, WebM, MOV, WebP: encoded_clip_sink.h),
 // every frame as PNG files, or one PNG of one frame (a still) or of several (a strip).
-enum class OutputKind { kMp4, kClip, kPngSequence, kPngStill, kStrip };
+enum class OutputKind { kMp4, kClip, kPngSequence, kPngStill, kStrip, kVectorStill };
 
 struct Output {
   OutputKind kind = OutputKind::kMp4;
-  ClipFormat clip = ClipFormat::kGif;  // of kClip
+  ClipFormat clip = ClipFormat::kGif;        // of kClip
+  VectorFormat vector = VectorFormat::kSvg;  // of kVectorStill
 };
 
 bool writes_one_png(OutputKind kind) {
-  return kind == OutputKind::kPngStill || kind == OutputKind::kStrip;
+  return kind == OutputKind::kPngStill || kind == OutputKind::kStrip ||
+         kind == OutputKind::kVectorStill;
 }
 
 // A usage error: printed as "error: ..." with exit code 2, before anything is written.
@@ -75,7 +79,8 @@ std::string extension_of(const std::string& path) {
 Output output_kind(const RenderOptions& o) {
   const std::string ext = extension_of(o.output);
   const std::string named = ext.empty() ? ext : ext.substr(1);
-  const bool known = named == "mp4" || named == "png" || parse_clip_format(named).has_value();
+  const bool known = named == "mp4" || named == "png" || named == "svg" || named == "pdf" ||
+                     parse_clip_format(named).has_value();
   // A file named for one format holding another is a mistake (a name without one of these
   // extensions, such as /dev/null, takes any --format).
   if (!o.format.empty() && known && named != o.format) {
@@ -97,6 +102,17 @@ Output output_kind(const RenderOptions& o) {
     return {OutputKind::kStrip};
   }
   const std::string format = o.format.empty() ? named : o.format;
+  if (format == "svg" || format == "pdf") {
+    if (!o.frame) {
+      throw UsageError(fmt::format(
+          "-o {}: {} holds one still: add --frame K (for a clip write .mp4, .gif, .webm, .mov "
+          "or .webp)",
+          o.output, format == "svg" ? "an SVG" : "a PDF"));
+    }
+    Output out{OutputKind::kVectorStill};
+    out.vector = format == "svg" ? VectorFormat::kSvg : VectorFormat::kPdf;
+    return out;
+  }
   const std::optional<ClipFormat> clip = parse_clip_format(format);
   if (format == "mp4" || clip) {
     if (o.frame) {
@@ -123,8 +139,8 @@ Output output_kind(const RenderOptions& o) {
   }
   throw UsageError(fmt::format(
       "-o {}: cannot tell the output format; expected a name ending in .mp4, .gif, .webm, .mov "
-      "or .webp, a PNG pattern like out/f_%04d.png, a .png with --frame K or --strip N, or "
-      "--format mp4|gif|webm|mov|webp|png",
+      "or .webp, a PNG pattern like out/f_%04d.png, a .png with --frame K or --strip N, an .svg "
+      "or .pdf with --frame K, or --format mp4|gif|webm|mov|webp|png|svg|pdf",
       o.output));
 }
 
@@ -234,8 +250,9 @@ struct Plan {
   OutputKind kind = OutputKind::kMp4;
   StripGrid strip;                  // of OutputKind::kStrip
   std::vector<std::string> labels;  // a strip's time labels, one per frame (--strip-labels)
-  ClipFormat clip_format = ClipFormat::kGif;  // of OutputKind::kClip
-  bool transparent = false;                   // render.background "transparent": keep alpha
+  ClipFormat clip_format = ClipFormat::kGif;        // of OutputKind::kClip
+  VectorFormat vector_format = VectorFormat::kSvg;  // of OutputKind::kVectorStill
+  bool transparent = false;                         // render.background "transparent": keep alpha
   FrameRange range;
   ClipPlan clip;  // frames to draw, fps, size, backend, anti-aliasing, overlays
   PngSettings png;
@@ -271,6 +288,7 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
   const Output output = output_kind(o);
   plan.kind = output.kind;
   plan.clip_format = output.clip;
+  plan.vector_format = output.vector;
   const Scene& scene = loaded.scene;
   plan.clip.fps = o.fps.value_or(scene.render.fps);
   const double duration = o.duration.value_or(scene.duration);
@@ -362,6 +380,31 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
 
 }  // namespace
 
+// Simulates to the still's frame and writes it as SVG or PDF (whole, or not at all).
+int write_vector(const RenderOptions& o, const Plan& plan, LoadedScene& loaded) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::optional<StillFrame> still =
+      simulate_still(loaded, plan.clip, &SigintGuard::interrupted());
+  CrossingWatch().check(*loaded.world, stderr);
+  if (!still) {
+    fmt::print(stderr, "interrupted: nothing written to {}\n", o.output);
+    return kExitInterrupted;
+  }
+  std::vector<std::uint8_t> bytes;
+  try {
+    bytes = make_vector_still(plan.vector_format, still->looks, still->settings, still->frame,
+                              still->text);
+  } catch (const std::runtime_error& e) {
+    throw SinkError(fmt::format("{}: {}", o.output, e.what()));
+  }
+  write_file_atomically(o.output, bytes);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  fmt::print(stderr, "done: 1 frame written to {} in {:.3g} s ({} KB, vector)\n", o.output, seconds,
+             (bytes.size() + 1023) / 1024);
+  return strict_exit_code(*loaded.world, o.strict, kExitOk, stderr);
+}
+
 int run_render(const RenderOptions& o) {
   std::optional<LoadedScene> loaded = load_scene_or_report(o.scene_path, o.accuracy, o.threads);
   if (!loaded) return kExitUsage;
@@ -402,6 +445,7 @@ int run_render(const RenderOptions& o) {
                                     plan.kind == OutputKind::kStrip ? "strip" : "still"));
       }
     }
+    if (plan.kind == OutputKind::kVectorStill) return write_vector(o, plan, *loaded);
     Progress progress(static_cast<double>(plan.clip.frames.size()), stderr,
                       Progress::Unit::kFrames);
     std::size_t done = 0;

@@ -32,6 +32,7 @@ void OverlayBuilder::line(const Vec2& from_px, const Vec2& to_px, float width_px
   const double length = d.norm();
   if (!(length > 0.0) || !std::isfinite(length)) return;
   const float half = 0.5f * width_px * scale_;
+  shapes_.push_back({false, from_px, to_px, half, colour});
   const float reach = half + fringe_;
   const Vec2 u = d / length;
   const Vec2 n(-u.y(), u.x());
@@ -48,6 +49,7 @@ void OverlayBuilder::line(const Vec2& from_px, const Vec2& to_px, float width_px
 
 void OverlayBuilder::disc(const Vec2& centre_px, float radius_px, const Rgba& colour) {
   const float radius = radius_px * scale_;
+  shapes_.push_back({true, centre_px, centre_px, radius, colour});
   const float reach = radius + fringe_;
   const float sx[4] = {-reach, reach, -reach, reach};
   const float sy[4] = {-reach, -reach, reach, reach};

@@ -32,13 +32,26 @@ struct OverlayVertex {
   float disc;           // 1 for a disc, 0 for a line
 };
 
+// One overlay shape as drawn, for vector output: a line from `from` to `to` (square caps) or a
+// disc at `from`, in px from the frame's centre, y up; sizes already scaled.
+struct OverlayShape {
+  bool disc = false;
+  Vec2 from = Vec2::Zero();
+  Vec2 to = Vec2::Zero();
+  double half_width = 0.0;  // px: half the line's width, or the disc's radius
+  Rgba colour;
+};
+
 class OverlayBuilder {
  public:
   // `fringe` px of anti-aliasing ramp around every shape (0 with MSAA); `scale` multiplies
   // every size (1 at 720 lines). `flip_y` draws the frame upside down (rows top first).
   OverlayBuilder(const Camera& camera, float fringe, float scale, bool flip_y);
 
-  void clear() { vertices_.clear(); }
+  void clear() {
+    vertices_.clear();
+    shapes_.clear();
+  }
   void line(const Vec2& from_px, const Vec2& to_px, float width_px, const Rgba& colour);
   void disc(const Vec2& centre_px, float radius_px, const Rgba& colour);
   // A line with a two-stroke head at `to_px`.
@@ -49,6 +62,7 @@ class OverlayBuilder {
                  const Overlays& overlays);
 
   const std::vector<OverlayVertex>& vertices() const { return vertices_; }
+  const std::vector<OverlayShape>& shapes() const { return shapes_; }
 
  private:
   void corner(const Vec2& px, float along, float across, const Rgba& colour, float half,
@@ -59,6 +73,7 @@ class OverlayBuilder {
   float scale_;
   float y_sign_;
   std::vector<OverlayVertex> vertices_;
+  std::vector<OverlayShape> shapes_;
 };
 
 }  // namespace rugosim

@@ -325,6 +325,10 @@ void write_png_file(const std::string& path, const Image& image, const PngSettin
   } catch (const std::runtime_error& error) {
     throw SinkError(std::string(path).append(": ").append(error.what()));
   }
+  write_file_atomically(path, bytes);
+}
+
+void write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& bytes) {
   const std::string target = replace_target(path);
   if (target.empty()) {
     write_directly(path, bytes);

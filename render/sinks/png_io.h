@@ -57,6 +57,9 @@ std::vector<std::uint8_t> encode_png(const Image& image, const PngSettings& sett
 // per frame. Throws SinkError("<path>: <what failed>: <system reason>"), and
 // std::invalid_argument as encode_png.
 void write_png_file(const std::string& path, const Image& image, const PngSettings& settings);
+// Writes `bytes` to `path` as write_png_file does: through a temporary file renamed over it
+// (a device or FIFO is written directly). Throws SinkError naming the path.
+void write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& bytes);
 
 // Any PNG (gray, gray + alpha, palette, RGB, RGBA; 1 to 16 bits per sample; tRNS transparency;
 // interlaced or not) as RGBA8: samples are taken as stored (no gamma or colour-space

@@ -152,6 +152,20 @@ TextExtent Font::measure(std::string_view text, int pixel_height) {
   return extent;
 }
 
+std::vector<PlacedGlyph> Font::place(std::string_view text, int pixel_height) {
+  std::vector<PlacedGlyph> placed;
+  int pen = 0;
+  unsigned previous = 0;
+  for (const char32_t code : decode_utf8(text)) {
+    const Glyph& g = glyph(code, pixel_height);
+    pen += kerning(previous, g.index, pixel_height);
+    previous = g.index;
+    placed.push_back({g.index, pen});
+    pen += g.advance;
+  }
+  return placed;
+}
+
 void Font::draw(Image& image, std::string_view text, int pixel_height, int x, int baseline,
                 const std::array<std::uint8_t, 4>& colour) {
   int pen = x;

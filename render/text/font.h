@@ -31,6 +31,12 @@ std::string default_font_path();
 // sequence cut short) becomes U+FFFD.
 std::vector<char32_t> decode_utf8(std::string_view text);
 
+// A glyph of laid-out text: the face's glyph index and its pen's x, px from the text's start.
+struct PlacedGlyph {
+  unsigned index = 0;
+  int x = 0;
+};
+
 struct TextExtent {
   int width = 0;    // px, from the pen's start to the end of the last advance
   int ascent = 0;   // px above the baseline (the face's, at this size)
@@ -47,6 +53,9 @@ class Font {
 
   // `text` (UTF-8) at `pixel_height` (the em, px).
   TextExtent measure(std::string_view text, int pixel_height);
+  // The glyphs of `text` at `pixel_height` and where their pens start (advances and kerning as
+  // draw() places them): for writers that draw the same text as vector glyphs.
+  std::vector<PlacedGlyph> place(std::string_view text, int pixel_height);
   // Draws `text` with its pen starting at (x, baseline) (px, y down), in `colour` (straight
   // RGBA), over what the image holds (straight alpha "over"); what falls outside is clipped.
   void draw(Image& image, std::string_view text, int pixel_height, int x, int baseline,

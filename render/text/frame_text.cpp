@@ -6,18 +6,16 @@
 #include <utility>
 
 namespace rugosim {
-namespace {
+namespace {}  // namespace
 
-void fill_rect(Image& image, int x0, int y0, int x1, int y1,
-               const std::array<std::uint8_t, 4>& colour) {
-  for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y) {
-    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x)
-      blend_over(image.pixel(x, y), colour, colour[3]);
+void ImageTextCanvas::rect(int x0, int y0, int x1, int y1,
+                           const std::array<std::uint8_t, 4>& colour) {
+  for (int y = std::max(0, y0); y < std::min(image_.height, y1); ++y) {
+    for (int x = std::max(0, x0); x < std::min(image_.width, x1); ++x)
+      blend_over(image_.pixel(x, y), colour, colour[3]);
   }
-  image.picture = 0;
+  image_.picture = 0;
 }
-
-}  // namespace
 
 std::optional<Corner> parse_corner(const std::string& name) {
   if (name == "top-left") return Corner::kTopLeft;
@@ -112,9 +110,9 @@ void label_strip(Image& strip, const StripGrid& grid, int frame_width, int frame
   }
 }
 
-void FrameTextPainter::paint_colour_bar(Image& image) {
-  const int w = image.width;
-  const int h = image.height;
+void FrameTextPainter::paint_colour_bar(TextCanvas& canvas) {
+  const int w = canvas.width();
+  const int h = canvas.height();
   const TextLayout layout = text_layout(h);
   const int length = std::max(8, w / 5);
   const int thickness = std::max(4, h / 60);
@@ -133,16 +131,16 @@ void FrameTextPainter::paint_colour_bar(Image& image) {
   for (int x = 0; x < length; ++x) {
     const auto rgb = rugosity_ramp(static_cast<double>(x) / std::max(1, length - 1));
     const std::array<std::uint8_t, 4> colour{rgb[0], rgb[1], rgb[2], 255};
-    fill_rect(image, x0 + x, bar_top, x0 + x + 1, bar_top + thickness, colour);
+    canvas.rect(x0 + x, bar_top, x0 + x + 1, bar_top + thickness, colour);
   }
   const std::string name = "rugosity tolerance λ";
   const TextExtent n = font_->measure(name, px);
-  font_->draw(image, name, px, x0 + (length - n.width) / 2, y_top + e.ascent, text_.colour);
+  canvas.text(name, px, x0 + (length - n.width) / 2, y_top + e.ascent, text_.colour);
   const int values = bar_top + thickness + layout.bar_thickness + e.ascent;
-  font_->draw(image, "0", px, x0, values, text_.colour);
+  canvas.text("0", px, x0, values, text_.colour);
   const std::string most = length_label(text_.largest_lambda);
   const TextExtent m = font_->measure(most, px);
-  font_->draw(image, most, px, x0 + length - m.width, values, text_.colour);
+  canvas.text(most, px, x0 + length - m.width, values, text_.colour);
 }
 
 FrameTextPainter::FrameTextPainter(FrameText text) : text_(std::move(text)) {
@@ -166,22 +164,28 @@ std::array<int, 2> FrameTextPainter::clock_origin(const std::string& text, int w
 
 void FrameTextPainter::paint(Image& image, double time, double metres_per_pixel) {
   if (!font_) return;
-  const int w = image.width;
-  const int h = image.height;
+  ImageTextCanvas canvas(image, *font_);
+  paint(canvas, time, metres_per_pixel);
+}
+
+void FrameTextPainter::paint(TextCanvas& canvas, double time, double metres_per_pixel) {
+  if (!font_) return;
+  const int w = canvas.width();
+  const int h = canvas.height();
   const TextLayout layout = text_layout(h);
   const auto centred = [&](const std::string& s, int px, bool top) {
     const TextExtent e = font_->measure(s, px);
     const int baseline = top ? layout.margin + e.ascent : h - layout.margin - e.descent;
-    font_->draw(image, s, px, (w - e.width) / 2, baseline, text_.colour);
+    canvas.text(s, px, (w - e.width) / 2, baseline, text_.colour);
   };
   if (!text_.title.empty()) centred(text_.title, layout.title_px, true);
   if (!text_.caption.empty()) centred(text_.caption, layout.caption_px, false);
   if (text_.clock) {
     const std::string s = clock_text(text_.clock_format, time);
     const auto [x, baseline] = clock_origin(s, w, h);
-    font_->draw(image, s, layout.clock_px, x, baseline, text_.colour);
+    canvas.text(s, layout.clock_px, x, baseline, text_.colour);
   }
-  if (text_.colour_bar) paint_colour_bar(image);
+  if (text_.colour_bar) paint_colour_bar(canvas);
   if (text_.scale_bar && metres_per_pixel > 0.0) {
     const double metres = text_.scale_bar_length > 0.0 ? text_.scale_bar_length
                                                        : scale_bar_length(w * metres_per_pixel);
@@ -204,8 +208,8 @@ void FrameTextPainter::paint(Image& image, double time, double metres_per_pixel)
       bar_top = h - layout.margin - layout.bar_thickness;
       baseline = bar_top - gap - e.descent;
     }
-    fill_rect(image, x0, bar_top, x0 + length, bar_top + layout.bar_thickness, text_.colour);
-    font_->draw(image, label, layout.clock_px, x0 + (length - e.width) / 2, baseline, text_.colour);
+    canvas.rect(x0, bar_top, x0 + length, bar_top + layout.bar_thickness, text_.colour);
+    canvas.text(label, layout.clock_px, x0 + (length - e.width) / 2, baseline, text_.colour);
   }
 }
 

@@ -18,6 +18,7 @@
 #include "render/image.h"
 #include "render/sinks/film_strip.h"
 #include "render/text/font.h"
+#include "render/text/text_canvas.h"
 
 namespace rugosim {
 
@@ -78,6 +79,9 @@ class FrameTextPainter {
   explicit FrameTextPainter(FrameText text);
   // Draws the frame's text over `image` (the frame at `time` s, `metres_per_pixel` its scale).
   void paint(Image& image, double time, double metres_per_pixel);
+  // The same layout handed to any canvas (a vector page: vector_still.h).
+  void paint(TextCanvas& canvas, double time, double metres_per_pixel);
+  bool any() const { return font_ != nullptr; }
   // Where the clock's text starts (its pen) and its baseline, px, in a frame of this size.
   std::array<int, 2> clock_origin(const std::string& text, int width, int height);
 
@@ -85,7 +89,7 @@ class FrameTextPainter {
   // The pen's x and the baseline for `text` at `px` in `corner`.
   std::array<int, 2> corner_origin(const std::string& text, int px, Corner corner, int width,
                                    int height);
-  void paint_colour_bar(Image& image);
+  void paint_colour_bar(TextCanvas& canvas);
 
   FrameText text_;
   std::unique_ptr<Font> font_;  // null when there is no text
