@@ -37,8 +37,9 @@ struct RenderOptions {
   std::string scene_path;
   std::string output;  // clip.mp4 (.gif, .webm, .mov, .webp), a PNG pattern like
                        // out/f_%04d.png, or one PNG (--frame: a still, --strip: a strip)
-  std::string format;  // "mp4", "gif", "webm", "mov", "webp", "png", "svg" or "pdf"; empty: the name
-  std::string frames;  // "A:B", inclusive; empty: the whole clip
+  std::string
+      format;  // "mp4", "gif", "webm", "mov", "webp", "png", "svg" or "pdf"; empty: the name
+  std::string frames;                // "A:B", inclusive; empty: the whole clip
   std::optional<std::size_t> frame;  // --frame K: one still PNG of frame K
   std::string camera;  // --camera auto | CX,CY,HEIGHT | follow:BODY[,HEIGHT]; empty: render.camera
   std::string size;    // "WxH"; empty: render.size
