@@ -9,7 +9,7 @@
 // statistic of the paper's model. The noise's coarsest wavelength is the correlation length ℓ,
 // in metres, so segments of equal σ look alike whatever their length, and the same body shows
 // the same detail at every resolution: more pixels only sample it more finely. Only octaves
-// under half a pixel, which could not be seen, are left out (and leaving one out changes no
+// under a pixel, which could not be seen, are left out (and leaving one out changes no
 // other). The detail is display-only: the physics never sees it.
 #pragma once
 
@@ -25,8 +25,10 @@ namespace rugosim {
 struct DetailSettings {
   double pixel_size = 0.0;  // m per pixel of the camera (> 0)
   double spacing_px = 1.5;  // px, the longest step between samples along the boundary
-  // Octaves whose lattice is finer than this are left out: they could not be seen.
-  double min_cell_px = 0.5;
+  // Octaves whose lattice is finer than this (px) are left out: their wavelengths, under 2 px,
+  // could not be seen, and their samples would cost the rasteriser (a frame of figure12a at
+  // 720p took 3.7 times as long with octaves down to 0.5 px; bench_render frame/shader).
+  double min_cell_px = 1.0;
   // The samples are at most 1/samples_per_cell of the finest octave's lattice apart, so that
   // the drawn shape is the same at every pixel size and nothing aliases.
   double samples_per_cell = 2.0;

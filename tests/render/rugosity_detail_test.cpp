@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -42,7 +43,7 @@ TEST(RugosityDetail, WithoutRoughnessThePointsLieOnTheCurveAtEqualSteps) {
 }
 
 // Samples every 1.5 px, or closer where the finest octave drawn needs two a lattice cell; at
-// least four a segment and at most 2^16; octaves under half a pixel, or that would need more
+// least four a segment and at most 2^16; octaves under a pixel, or that would need more
 // samples than that, are left out.
 TEST(RugosityDetail, SamplesFollowThePixelsAndTheFinestOctave) {
   const PeriodicBSpline curve = circle(1.0, 32);
@@ -61,15 +62,15 @@ TEST(RugosityDetail, SamplesFollowThePixelsAndTheFinestOctave) {
         finest = out.length /
                  std::round(out.length / std::ldexp(out.correlation_length, 1 - out.octaves));
         EXPECT_LE(step, finest / 2.0) << pixel;
-        EXPECT_GE(finest, 0.5 * pixel) << pixel;
+        EXPECT_GE(finest, pixel) << pixel;
       }
       if (sigma == 0.0) {
         EXPECT_GT(step, 1.5 * pixel * 0.99) << pixel;
       }
       if (sigma > 0.0 && out.octaves < 12) {
-        // The next octave is under half a pixel, or its samples would pass max_points.
+        // The next octave is under a pixel, or its samples would pass max_points.
         const double next = finest / 2.0;
-        EXPECT_TRUE(next < 0.5 * pixel * 1.01 || out.length / (next / 2.0) > 65536 * 0.99) << pixel;
+        EXPECT_TRUE(next < pixel * 1.01 || out.length / (next / 2.0) > 65536 * 0.99) << pixel;
       }
     }
   }
@@ -130,11 +131,12 @@ double shape_correlation(const DetailOutline& a, const DetailOutline& b) {
 }
 
 // A 20 cm rock in a 720p and a 4K view of a 3 m tall scene, σ from 3 to 12 mm, eight seeds
-// each. The 4K outline draws the 720p one's octaves and one or two finer ones (the octaves
-// under half a 720p pixel): summed over the seeds, the band powers agree within 10% in every
-// octave band of wavelengths the 720p frame shows (4 px and up), and each seed's two
-// displacements at the same arc lengths correlate above 0.97 (the extra octaves hold at most
-// 2^(−4.8) = 3.6% of the variance).
+// each. The 4K outline draws the 720p one's octaves and one or two finer ones (those under a
+// 720p pixel, which it leaves out): summed over the seeds, the band powers agree within 15% in
+// every octave band of wavelengths of four lattice cells of the finest octave 720p draws and
+// more (measured: within 7%, but for the single frequency of one turn at σ = 3 mm, 13%), and
+// each seed's two displacements at the same arc lengths correlate above 0.9 (the octaves 720p
+// leaves out hold at most 2^(−3.2) = 11% of the variance).
 TEST(RugosityDetail, SameSpectrumAndShapeAt720pAnd4K) {
   const PeriodicBSpline rock = circle(0.1, 24);
   const double pixel = 3.0 / 720.0;
@@ -146,11 +148,13 @@ TEST(RugosityDetail, SameSpectrumAndShapeAt720pAnd4K) {
       const DetailOutline low = make_detail_outline(rock, sigma, seed, {.pixel_size = pixel});
       const DetailOutline high =
           make_detail_outline(rock, sigma, seed, {.pixel_size = 3.0 / 2160.0});
-      ASSERT_GE(low.octaves, 3);
+      ASSERT_GE(low.octaves, 2);
       ASSERT_GT(high.octaves, low.octaves);
       ASSERT_LT(low.points.size(), high.points.size());
       ASSERT_EQ(low.correlation_length, high.correlation_length);
-      top = static_cast<int>(low.length / (4.0 * pixel));  // cycles of 4 px
+      // Cycles of four lattice cells of the finest octave 720p draws.
+      top = static_cast<int>(low.length /
+                             (4.0 * std::ldexp(low.correlation_length, 1 - low.octaves)));
       std::size_t band = 0;
       for (int k0 = 1; 2 * k0 <= top; k0 *= 2, ++band) {
         if (seed == 1) {
@@ -160,11 +164,11 @@ TEST(RugosityDetail, SameSpectrumAndShapeAt720pAnd4K) {
         low_power[band] += band_power(low.displacement, k0, 2 * k0);
         high_power[band] += band_power(high.displacement, k0, 2 * k0);
       }
-      EXPECT_GT(shape_correlation(low, high), 0.97) << s << " " << seed;
+      EXPECT_GT(shape_correlation(low, high), 0.9) << s << " " << seed;
     }
-    ASSERT_GE(low_power.size(), 4u);
+    ASSERT_GE(low_power.size(), 3u);
     for (std::size_t band = 0; band < low_power.size(); ++band) {
-      EXPECT_NEAR(low_power[band] / high_power[band], 1.0, 0.1)
+      EXPECT_NEAR(low_power[band] / high_power[band], 1.0, 0.15)
           << "σ " << s << ", cycles from " << (1 << band);
     }
   }
