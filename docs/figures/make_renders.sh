@@ -68,3 +68,11 @@ themed paper "$out/figure12a_text.png" 640x360
 for theme in paper dark print; do themed "$theme" "$work/theme_$theme.png" 480x270; done
 ffmpeg -loglevel error -y -i "$work/theme_paper.png" -i "$work/theme_dark.png" \
   -i "$work/theme_print.png" -filter_complex "vstack=3" -frames:v 1 "$out/themes.png"
+
+# A vector still (the SVG itself, which the README shows as it is) and a transparent PNG still.
+"$program" render scenes/figure12a_slide.json -o "$out/figure12a_slide.svg" --frame 90 \
+  --size 640x360 -y 2>/dev/null
+sed 's/"render": {/"render": { "background": "transparent",/' scenes/figure12a.json \
+  >"$work/transparent.json"
+"$program" render "$work/transparent.json" -o "$out/figure12a_transparent.png" --frame 45 \
+  --size 480x270 -y 2>/dev/null
