@@ -34,30 +34,10 @@ using rugosim::testing::read_text;
 using rugosim::testing::RenderCommand;
 using rugosim::testing::VideoProbe;
 
-// How far a GIF frame (256 colours, dithered) is from the RGB frame it was made of.
-struct PaletteError {
-  double mean = 0.0;       // mean |difference| over every channel of every pixel, in levels
-  double far_share = 0.0;  // share of pixels with a channel more than 48 levels off
-};
-
-PaletteError palette_error(const Image& gif, const Image& png) {
-  PaletteError e;
-  if (gif.width != png.width || gif.height != png.height) return {255.0, 1.0};
-  std::size_t far = 0;
-  double sum = 0.0;
-  for (std::size_t i = 0; i + 3 < png.rgba.size(); i += 4) {
-    int worst = 0;
-    for (std::size_t c = 0; c < 3; ++c) {
-      const int d = std::abs(int{gif.rgba[i + c]} - int{png.rgba[i + c]});
-      sum += d;
-      worst = std::max(worst, d);
-    }
-    far += worst > 48 ? 1u : 0u;
-  }
-  const double pixels = static_cast<double>(png.rgba.size() / 4);
-  e.mean = sum / (3.0 * pixels);
-  e.far_share = static_cast<double>(far) / pixels;
-  return e;
+// How far a GIF frame (256 colours, dithered) is from the RGB frame it was made of: colour
+// only, "far" past 48 levels.
+rugosim::testing::ImageDifference palette_error(const Image& gif, const Image& png) {
+  return rugosim::testing::image_difference(gif, png, 3, 48);
 }
 
 TEST_F(RenderCommand, GifHoldsTheFramesAtTheClipsRateInItsPalette) {
@@ -79,7 +59,7 @@ TEST_F(RenderCommand, GifHoldsTheFramesAtTheClipsRateInItsPalette) {
   for (const std::size_t k : {0u, 15u, 30u}) {
     const Image png = frame(scene.string(), k, {});
     ASSERT_FALSE(png.rgba.empty());
-    const PaletteError e = palette_error(probe.decoded_rgba[k], png);
+    const rugosim::testing::ImageDifference e = palette_error(probe.decoded_rgba[k], png);
     EXPECT_LT(e.mean, 1.0) << "frame " << k;
     EXPECT_LT(e.far_share, 0.002) << "frame " << k;
     std::printf("frame %zu: mean %.3f levels, %.4f%% of pixels past 48\n", k, e.mean,

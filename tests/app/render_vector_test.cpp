@@ -22,30 +22,6 @@ using rugosim::read_png_file;
 using rugosim::testing::Outcome;
 using rugosim::testing::RenderCommand;
 
-struct Difference {
-  double mean = 0.0;       // levels, over every channel of every pixel
-  double far_share = 0.0;  // share of pixels with a channel more than 64 levels off
-};
-
-Difference compare(const Image& a, const Image& b) {
-  Difference d;
-  if (a.width != b.width || a.height != b.height) return {255.0, 1.0};
-  std::size_t far = 0;
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.rgba.size(); i += 4) {
-    int worst = 0;
-    for (std::size_t c = 0; c < 4; ++c) {
-      const int delta = std::abs(int{a.rgba[i + c]} - int{b.rgba[i + c]});
-      sum += delta;
-      worst = std::max(worst, delta);
-    }
-    far += worst > 64 ? 1u : 0u;
-  }
-  d.mean = sum / static_cast<double>(a.rgba.size());
-  d.far_share = static_cast<double>(far) / static_cast<double>(a.rgba.size() / 4);
-  return d;
-}
-
 class RenderVector : public RenderCommand {
  protected:
   // Runs a shell command line (a rasteriser), exit code 0 expected.
@@ -74,7 +50,9 @@ class RenderVector : public RenderCommand {
       const Image vector = read_png_file(base + "_" + which + ".png");
       ASSERT_EQ(vector.width, 480) << which;
       ASSERT_EQ(vector.height, 270) << which;
-      const Difference d = compare(gl, vector);
+      // Every channel, alpha too; "far" past 64 levels.
+      const rugosim::testing::ImageDifference d =
+          rugosim::testing::image_difference(gl, vector, 4, 64);
       EXPECT_LT(d.mean, mean_limit) << which << " " << scene;
       EXPECT_LT(d.far_share, 0.02) << which << " " << scene;
       std::printf("%s of %s: mean %.3f levels, %.3f%% of pixels > 64 levels off\n", which.c_str(),
@@ -86,7 +64,7 @@ class RenderVector : public RenderCommand {
 
 // Stated tolerance: a mean of 2 levels over every channel, and at most 2% of the pixels more
 // than 64 levels off (anti-aliased edges and glyphs rasterised by another rasteriser). Measured
-// at 480×270: SVG 0.07–0.33 levels, PDF 0.32–0.71 levels, at most 0.22% of pixels far off.
+// at 480×270: SVG 0.05–0.26 levels, PDF 0.31–0.72 levels, at most 0.22% of pixels far off.
 TEST_F(RenderVector, SvgAndPdfRasteriseToTheGlFrame) {
   check(fixed_camera_scene(), 30, {}, 3.0);
   check(fixed_camera_scene(), 30, {"--overlay", "rugosity,contacts,velocity"}, 3.0);

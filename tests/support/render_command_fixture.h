@@ -33,6 +33,32 @@ inline std::string figure12a() {
   return (source_dir() / "scenes" / "figure12a.json").string();
 }
 
+// How far one image is from another of the same size, over its first `channels` channels
+// (3: colour only; 4: with alpha).
+struct ImageDifference {
+  double mean = 0.0;       // mean |difference| over those channels of every pixel, in levels
+  double far_share = 0.0;  // share of pixels with one of them more than `far` levels off
+};
+inline ImageDifference image_difference(const Image& a, const Image& b, std::size_t channels,
+                                        int far) {
+  if (a.width != b.width || a.height != b.height || a.rgba.size() != b.rgba.size()) {
+    return {255.0, 1.0};
+  }
+  std::size_t far_pixels = 0;
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 3 < a.rgba.size(); i += 4) {
+    int worst = 0;
+    for (std::size_t c = 0; c < channels; ++c) {
+      const int d = std::abs(int{a.rgba[i + c]} - int{b.rgba[i + c]});
+      sum += d;
+      worst = std::max(worst, d);
+    }
+    far_pixels += worst > far ? 1u : 0u;
+  }
+  const double pixels = static_cast<double>(a.rgba.size() / 4);
+  return {sum / (static_cast<double>(channels) * pixels), static_cast<double>(far_pixels) / pixels};
+}
+
 // Pixels that differ in any channel; all of them when the sizes differ.
 inline std::size_t differing_pixels(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height || a.rgba.size() != b.rgba.size()) {
