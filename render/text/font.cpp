@@ -160,7 +160,7 @@ std::vector<PlacedGlyph> Font::place(std::string_view text, int pixel_height) {
     const Glyph& g = glyph(code, pixel_height);
     pen += kerning(previous, g.index, pixel_height);
     previous = g.index;
-    placed.push_back({g.index, pen});
+    placed.push_back({g.index, pen, code});
     pen += g.advance;
   }
   return placed;
@@ -168,12 +168,10 @@ std::vector<PlacedGlyph> Font::place(std::string_view text, int pixel_height) {
 
 void Font::draw(Image& image, std::string_view text, int pixel_height, int x, int baseline,
                 const std::array<std::uint8_t, 4>& colour) {
-  int pen = x;
-  unsigned previous = 0;
-  for (const char32_t code : decode_utf8(text)) {
-    const Glyph& g = glyph(code, pixel_height);
-    pen += kerning(previous, g.index, pixel_height);
-    previous = g.index;
+  // The pens as place() lays them out, so that raster and vector text never part.
+  for (const PlacedGlyph& placed : place(text, pixel_height)) {
+    const Glyph& g = glyph(placed.code, pixel_height);
+    const int pen = x + placed.x;
     for (int row = 0; row < g.rows; ++row) {
       const int py = baseline - g.top + row;
       if (py < 0 || py >= image.height) continue;
@@ -188,7 +186,6 @@ void Font::draw(Image& image, std::string_view text, int pixel_height, int x, in
         blend_over(image.pixel(px, py), colour, a);
       }
     }
-    pen += g.advance;
   }
   image.picture = 0;  // the pixels changed
 }

@@ -35,6 +35,7 @@ std::vector<char32_t> decode_utf8(std::string_view text);
 struct PlacedGlyph {
   unsigned index = 0;
   int x = 0;
+  char32_t code = 0;  // the code point it draws
 };
 
 struct TextExtent {
