@@ -5,7 +5,7 @@
 #include <thread>
 #include <utility>
 
-#include "render/pipeline/bounded_queue.h"
+#include "render/bounded_queue.h"
 
 namespace rugosim {
 namespace {

@@ -1,7 +1,8 @@
-// A blocking first-in first-out queue of bounded size between two threads of the render
-// pipeline: a full queue makes the producer wait (a slow encoder holds back the renderer and
-// the simulation, so memory stays bounded), an empty one makes the consumer wait. close() ends
-// it: waiting threads wake, push refuses, pop drains what is left and then gives nullopt.
+// A blocking first-in first-out queue of bounded size between two threads (the render
+// pipeline's stages, a clip sink's filters and its encoder): a full queue makes the producer
+// wait (a slow encoder holds back the renderer and the simulation, so memory stays bounded), an
+// empty one makes the consumer wait. close() ends it: waiting threads wake, push refuses, pop
+// drains what is left and then gives nullopt.
 #pragma once
 
 #include <condition_variable>
