@@ -20,6 +20,7 @@ extern "C" {
 #include <libavutil/log.h>
 }
 
+#include "support/file_size_limit.h"
 #include "support/file_text.h"
 #include "support/sink_error.h"
 #include "support/video_probe.h"
@@ -179,6 +180,42 @@ TEST_F(EncodedClipSinkTest, FullDeviceIsASinkErrorNamingThePathAndTheReason) {
   });
   EXPECT_NE(error.find("/dev/full"), std::string::npos) << error;
   EXPECT_NE(error.find("No space left on device"), std::string::npos) << error;
+}
+
+// A disk that fills up in the middle of a clip (a file size limit stands in for it): the header
+// goes through, a later packet does not. The packets are written on the sink's encoding thread,
+// so the failure reaches the writer from there: a later write() or close() reports it with the
+// path and the reason, the sink closes all the same, and nothing is left beside the target.
+TEST_F(EncodedClipSinkTest, DiskFullMidClipIsASinkErrorFromWriteOrClose) {
+  const std::string path = file("limited.webm");
+  const testing::FileSizeLimit limit(8 * 1024);  // bytes: the header and a frame or two of noise
+  std::string message;
+  {
+    // At 5 frames a second the muxer writes a cluster every 25 frames (5 s), before the end.
+    EncodedClipSink sink(path, ClipFormat::kWebm, 160, 120, ClipOptions{5});
+    message = sink_error_of([&] {
+      Image noise(160, 120);
+      std::uint32_t state = 12345;
+      for (int k = 0; k < 60; ++k) {
+        for (std::uint8_t& byte : noise.rgba) {
+          state = state * 1664525U + 1013904223U;
+          byte = static_cast<std::uint8_t>(state >> 24);
+        }
+        sink.write(noise, static_cast<std::size_t>(k));
+      }
+      sink.close();
+    });
+    // The close after the failure says again that the clip is incomplete, once: then it is closed.
+    try {
+      sink.close();
+    } catch (const SinkError&) {
+    }
+    EXPECT_NO_THROW(sink.close());
+  }
+  EXPECT_NE(message.find(path), std::string::npos) << message;
+  EXPECT_NE(message.find("File too large"), std::string::npos) << message;
+  EXPECT_NE(message.find("writing a packet"), std::string::npos) << message << ": not mid-clip";
+  EXPECT_TRUE(names().empty()) << "neither the clip nor its temporary file is left";
 }
 
 TEST_F(EncodedClipSinkTest, SizesAndRatesAFormatCannotHoldAreInvalidArguments) {

@@ -13,7 +13,6 @@
 #include <signal.h>
 #include <stdexcept>
 #include <string>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
@@ -24,6 +23,7 @@ extern "C" {
 #include <libavutil/log.h>
 }
 
+#include "support/file_size_limit.h"
 #include "support/file_text.h"
 #include "support/sink_error.h"
 #include "support/video_probe.h"
@@ -320,35 +320,12 @@ TEST_F(Mp4SinkTest, FullDeviceIsASinkErrorNamingThePathAndTheReason) {
   EXPECT_NE(message.find("No space left on device"), std::string::npos) << message;
 }
 
-// Limits the size of files this process writes, for its lifetime: past the limit write(2)
-// fails with EFBIG ("File too large") rather than the process getting SIGXFSZ.
-class FileSizeLimit {
- public:
-  explicit FileSizeLimit(rlim_t bytes) {
-    if (getrlimit(RLIMIT_FSIZE, &saved_) != 0) throw std::runtime_error("getrlimit failed");
-    saved_handler_ = signal(SIGXFSZ, SIG_IGN);
-    rlimit limited = saved_;
-    limited.rlim_cur = bytes;
-    if (setrlimit(RLIMIT_FSIZE, &limited) != 0) throw std::runtime_error("setrlimit failed");
-  }
-  ~FileSizeLimit() {
-    setrlimit(RLIMIT_FSIZE, &saved_);
-    signal(SIGXFSZ, saved_handler_);
-  }
-  FileSizeLimit(const FileSizeLimit&) = delete;
-  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
-
- private:
-  rlimit saved_{};
-  void (*saved_handler_)(int) = SIG_DFL;
-};
-
 // A disk that fills up in the middle of a render (a file size limit stands in for it): the
 // header goes through, a later fragment does not, and the write or the close that hits it
 // says so with the path; close() ends it all the same and frees everything (LeakSanitizer).
 TEST_F(Mp4SinkTest, DiskFullMidRenderIsASinkErrorFromWriteOrClose) {
   const std::string path = file("limited.mp4");
-  const FileSizeLimit limit(16 * 1024);  // bytes: the header and a few fragments of noise
+  const testing::FileSizeLimit limit(16 * 1024);  // bytes: the header and a few fragments of noise
   std::string message;
   {
     Mp4Sink sink(path, 160, 120,
