@@ -3,6 +3,8 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <string>
+#include <vector>
 
 namespace rugosim::bench {
 
@@ -99,19 +101,22 @@ void set_baseline_variant(const std::string& family, const std::string& variant)
 
 int run_with_ratios(int argc, char** argv) {
   // --ratio_table=FILE (ours, taken out before Google Benchmark parses the rest).
+  // Random interleaving goes first, so that the command line's own setting, parsed later, wins.
   std::string table;
-  int kept = 1;
+  static char interleave[] = "--benchmark_enable_random_interleaving=true";
+  std::vector<char*> args{argv[0], interleave};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg.rfind("--ratio_table=", 0) == 0) {
       table = arg.substr(std::string("--ratio_table=").size());
     } else {
-      argv[kept++] = argv[i];
+      args.push_back(argv[i]);
     }
   }
-  argc = kept;
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  int count = static_cast<int>(args.size());
+  args.push_back(nullptr);
+  benchmark::Initialize(&count, args.data());
+  if (benchmark::ReportUnrecognizedArguments(count, args.data())) return 1;
   RatioReporter reporter(table);
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
