@@ -292,6 +292,9 @@ EncodedClipSink::EncodedClipSink(std::string path, ClipFormat format, int width,
   e.check(avformat_alloc_output_context2(&muxer, nullptr, spec.muxer, nullptr),
           "setting up the " + name + " muxer");
   e.format.reset(muxer);
+  // The same frames make the same file: the Matroska muxer otherwise writes a random segment
+  // UID (which WebM does not use) and its library version.
+  if (format == ClipFormat::kWebm) muxer->flags |= AVFMT_FLAG_BITEXACT;
   const AVCodec* codec = avcodec_find_encoder_by_name(spec.encoder);
   if (codec == nullptr) e.fail(std::string("this FFmpeg has no ") + spec.encoder + " encoder");
   e.stream = avformat_new_stream(muxer, nullptr);
