@@ -330,24 +330,7 @@ TEST_F(Mp4SinkTest, DiskFullMidRenderIsASinkErrorFromWriteOrClose) {
   {
     Mp4Sink sink(path, 160, 120,
                  Mp4Options{.crf = 0, .preset = "ultrafast", .keyframe_interval = 2});
-    message = sink_error_of([&] {
-      Image noise(160, 120);
-      std::uint32_t state = 12345;
-      for (int i = 0; i < 100; ++i) {
-        for (std::uint8_t& byte : noise.rgba) {
-          state = state * 1664525U + 1013904223U;
-          byte = static_cast<std::uint8_t>(state >> 24);
-        }
-        sink.write(noise, static_cast<std::size_t>(i));
-      }
-      sink.close();
-    });
-    // A close after the failed write says again that the file is short, once: then it is closed.
-    try {
-      sink.close();
-    } catch (const SinkError&) {
-    }
-    EXPECT_NO_THROW(sink.close());
+    message = testing::sink_error_writing_noise(sink, 160, 120, 100);
   }
   EXPECT_NE(message.find(path), std::string::npos) << message;
   EXPECT_NE(message.find("File too large"), std::string::npos) << message;
