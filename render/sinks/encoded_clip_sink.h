@@ -16,7 +16,10 @@
 //         milliseconds.
 // The file goes to a temporary file beside the target that replaces it only when complete: a
 // failed or killed render leaves any earlier file as it was. A target that is a device or a
-// pipe is written directly.
+// pipe is written directly. The filters run on the caller's thread, the encoder and the muxer
+// on a thread of the sink's own (so that filtering a frame overlaps encoding the one before):
+// a failure there (a full disk) is reported by the next write() or by close(). The same
+// frames make the same file, byte for byte.
 #pragma once
 
 #include <cstddef>
@@ -57,9 +60,10 @@ class EncodedClipSink final : public FrameSink {
   EncodedClipSink(const EncodedClipSink&) = delete;
   EncodedClipSink& operator=(const EncodedClipSink&) = delete;
 
-  // Hands one frame to the filters and the encoder. Frames get consecutive times whatever
-  // `index` says. Throws SinkError for a frame of another size, a filter or encoder failure,
-  // and after close().
+  // Hands one frame to the filters and queues the result for the encoder (waiting while two
+  // frames are queued). Frames get consecutive times whatever `index` says. Throws SinkError
+  // for a frame of another size, a filter failure, an encoder or muxer failure met since the
+  // last call, and after close().
   void write(const Image& frame, std::size_t index) override;
   // Finishes the encoding, writes the trailer and puts the file in place. After a write()
   // that threw, or with no frame written, it reports that as SinkError and leaves the target
