@@ -1,11 +1,11 @@
 #include "render/pipeline/render_pipeline.h"
 
-#include <exception>
-#include <mutex>
+#include <atomic>
 #include <thread>
 #include <utility>
 
 #include "render/bounded_queue.h"
+#include "render/first_error.h"
 
 namespace rugosim {
 namespace {
@@ -13,26 +13,6 @@ namespace {
 struct RenderedFrame {
   Image image;
   std::size_t frame = 0;
-};
-
-// The first exception of any stage; the others are consequences of stopping.
-class FirstError {
- public:
-  void capture() {
-    std::lock_guard lock(mutex_);
-    if (!error_) error_ = std::current_exception();
-  }
-  bool any() {
-    std::lock_guard lock(mutex_);
-    return error_ != nullptr;
-  }
-  void rethrow() {
-    if (error_) std::rethrow_exception(error_);
-  }
-
- private:
-  std::mutex mutex_;
-  std::exception_ptr error_;
 };
 
 }  // namespace

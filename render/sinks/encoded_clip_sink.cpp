@@ -5,8 +5,6 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <exception>
-#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -29,6 +27,7 @@ extern "C" {
 }
 
 #include "render/bounded_queue.h"
+#include "render/first_error.h"
 #include "render/sinks/libav_support.h"
 
 namespace rugosim {
@@ -143,9 +142,8 @@ struct EncodedClipSink::Encoder : LibavErrors {  // path: the target, named by e
   AVFilterContext* sink = nullptr;    // owned by `graph`
   AVStream* stream = nullptr;         // owned by `format`
   BoundedQueue<FramePtr> to_encode{kFramesQueued};
-  std::thread encoding;  // runs encode_queued() from start_encoding() until stop_encoding()
-  std::mutex error_mutex;
-  std::exception_ptr encoding_error;  // the encoding thread's failure, rethrown by the writer
+  std::thread encoding;       // runs encode_queued() from start_encoding() until stop_encoding()
+  FirstError encoding_error;  // the encoding thread's failure, rethrown by the writer
 
   ~Encoder() {
     stop_encoding();
@@ -182,10 +180,7 @@ struct EncodedClipSink::Encoder : LibavErrors {  // path: the target, named by e
         encode(next->get(), std::string("encoding frame ").append(std::to_string(frame++)));
       }
     } catch (...) {
-      {
-        const std::lock_guard lock(error_mutex);
-        encoding_error = std::current_exception();
-      }
+      encoding_error.capture();
       to_encode.close();
     }
   }
@@ -194,10 +189,6 @@ struct EncodedClipSink::Encoder : LibavErrors {  // path: the target, named by e
   void stop_encoding() {
     to_encode.close();
     if (encoding.joinable()) encoding.join();
-  }
-  void rethrow_encoding_error() {
-    const std::lock_guard lock(error_mutex);
-    if (encoding_error) std::rethrow_exception(encoding_error);
   }
 
   // Queues every frame the filters have finished for the encoder.
@@ -218,7 +209,7 @@ struct EncodedClipSink::Encoder : LibavErrors {  // path: the target, named by e
       if (!queued) fail(what, AVERROR(ENOMEM));
       av_frame_move_ref(queued.get(), filtered.get());  // the pixels, not a copy
       if (!to_encode.push(std::move(queued))) {
-        rethrow_encoding_error();  // the encoder stopped on a failure
+        encoding_error.rethrow();  // the encoder stopped on a failure
         fail(what + ": the encoder has stopped");
       }
     }
@@ -386,7 +377,7 @@ void EncodedClipSink::write(const Image& frame, std::size_t index) {
   }
   Encoder& e = *encoder_;
   try {
-    e.rethrow_encoding_error();  // an earlier frame's, found by the encoding thread
+    e.encoding_error.rethrow();  // an earlier frame's, found by the encoding thread
     std::unique_ptr<AVFrame, FrameFree> input(av_frame_alloc());
     if (!input) e.fail("allocating " + what, AVERROR(ENOMEM));
     input->format = AV_PIX_FMT_RGBA;
@@ -425,7 +416,7 @@ void EncodedClipSink::close() {
   e.check(av_buffersrc_add_frame(e.source, nullptr), "finishing the filters");
   e.drain_filters("encoding the frames");
   e.stop_encoding();
-  e.rethrow_encoding_error();
+  e.encoding_error.rethrow();
   e.encode(nullptr, "flushing the encoder");
   e.check(av_write_trailer(e.format.get()), "writing the trailer");
   e.flush_io("writing the clip");
