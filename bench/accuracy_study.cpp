@@ -26,6 +26,7 @@
 #include <fmt/core.h>
 
 #include "accuracy_metrics.h"
+#include "convergence_report.h"
 #include "engine/scene/scene_loader.h"
 #include "render/app/gnuplot.h"
 
@@ -79,17 +80,7 @@ constexpr double kReferenceCheckShare = 0.25;
 
 // The tightest settings of the study: the figure scenes' reference.
 Accuracy reference_accuracy() {
-  return Accuracy{.max_step = 6.25e-5,
-                  .rest_stride = 1,
-                  .mid_step_rest = 1,
-                  .rest_sweeps = 1024,
-                  .toi_tolerance = 1e-11,
-                  .max_bisections = 200,
-                  .newton_tolerance = 1e-14,
-                  .newton_iterations = 100,
-                  .seed_depth = 60,
-                  .contact_passes = 1024,
-                  .contact_threshold = 1e-5};
+  return finest_at(6.25e-5);
 }
 
 struct SceneFile {
@@ -318,60 +309,8 @@ unset multiplot
   app::run_gnuplot(script, path.string());
 }
 
-// A mistake on the command line (exit 2, as rugosim's own).
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-int run(int argc, char** argv) {
-  fs::path out_dir = fs::path(RUGOSIM_SOURCE_DIR) / "docs" / "accuracy";
-  int repeats = 3;
-  bool out_dir_given = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "-h" || arg == "--help") {
-      fmt::print(
-          "Usage: accuracy_study [OUT_DIR] [--repeats N]\n"
-          "Runs every built-in scene at every preset and along each accuracy knob and\n"
-          "writes accuracy.csv, accuracy.md and pareto.png into OUT_DIR (default\n"
-          "docs/accuracy of the source tree). N: timed runs per setting, best kept (3).\n");
-      return 0;
-    }
-    if (arg == "--repeats") {
-      char* end = nullptr;
-      const long n = i + 1 < argc ? std::strtol(argv[i + 1], &end, 10) : 0;
-      if (i + 1 >= argc || *end != '\0' || n < 1 || n > 1000)
-        throw UsageError("--repeats expects a whole number from 1 to 1000");
-      repeats = static_cast<int>(n);
-      ++i;
-    } else if (!arg.empty() && arg[0] == '-') {
-      throw UsageError("unknown option " + arg + " (see --help)");
-    } else if (out_dir_given) {
-      throw UsageError("one OUT_DIR expected, got " + out_dir.string() + " and " + arg);
-    } else {
-      out_dir = arg;
-      out_dir_given = true;
-    }
-  }
-  fs::create_directories(out_dir);
-
-  std::vector<SceneFile> scenes;
-  for (const auto& entry : fs::directory_iterator(fs::path(RUGOSIM_SOURCE_DIR) / "scenes")) {
-    if (entry.path().extension() != ".json") continue;
-    // The benchmark piles measure speed (bench_pile); figure12a and figure12b are the chaotic
-    // piles of the study, and a reference run of 1,000 bodies at 62.5 µs would take hours.
-    if (entry.path().stem().string().rfind("pile_", 0) == 0) continue;
-    SceneFile f;
-    f.name = entry.path().stem().string();
-    f.path = entry.path().string();
-    const SceneLoad load = load_scene_file(f.path);
-    if (!load.ok()) throw std::runtime_error(f.path + " does not load");
-    f.scene = load.scene;
-    f.validation = f.name.rfind("validation_", 0) == 0;
-    scenes.push_back(std::move(f));
-  }
-  std::sort(scenes.begin(), scenes.end(),
-            [](const SceneFile& a, const SceneFile& b) { return a.name < b.name; });
+// Every setting on every scene: accuracy.csv, accuracy.md, pareto.png.
+void settings_part(std::vector<SceneFile>& scenes, const fs::path& out_dir, int repeats) {
   for (SceneFile& f : scenes) {
     if (f.validation) continue;
     fmt::print(stderr, "reference run of {}\n", f.name);
@@ -434,6 +373,104 @@ int run(int argc, char** argv) {
   write_markdown(out_dir / "accuracy.md", summaries, scenes, repeats);
   write_plot(out_dir / "pareto.png", summaries);
   fmt::print(stderr, "wrote {}/accuracy.csv, accuracy.md and pareto.png\n", out_dir.string());
+}
+
+// Whether a scene's trajectory can be compared along the step: the piles are chaotic (any
+// change of settings soon gives another pile) and the close-up has nothing in contact.
+bool converges(const std::string& name) {
+  for (const char* prefix : {"validation_", "figure06_", "figure09_"}) {
+    if (name.rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
+// Each non-chaotic scene along the step: convergence.csv, convergence.md, convergence.png.
+void convergence_part(const std::vector<SceneFile>& scenes, const fs::path& out_dir, int repeats) {
+  std::vector<SceneConvergence> results;
+  for (const SceneFile& f : scenes) {
+    if (!converges(f.name)) continue;
+    fmt::print(stderr, "convergence of {}\n", f.name);
+    results.push_back(study_convergence(f.name, f.scene, f.path, convergence_steps(), repeats));
+    const SceneConvergence& r = results.back();
+    for (const ConvergencePoint& p : r.points) {
+      fmt::print(stderr, "  {:8g} ms {:9.4f} s  error {:.3e}  from 2h {:.3e}{}\n", 1e3 * p.step,
+                 p.wall_s, p.error, p.previous,
+                 p.closed ? fmt::format("  closed form {:.3e}", p.closed->error) : "");
+    }
+    fmt::print(stderr, "  p {:.2f}  order {:.2f}  monotone {}{}\n", r.richardson_order, r.order,
+               r.monotone, r.floor ? fmt::format("  floor {:.3e}", r.floor->error) : "");
+  }
+  write_convergence_csv(out_dir / "convergence.csv", results);
+  write_convergence_markdown(out_dir / "convergence.md", results);
+  write_convergence_plot(out_dir / "convergence.png", results);
+  fmt::print(stderr, "wrote {}/convergence.csv, convergence.md and convergence.png\n",
+             out_dir.string());
+}
+
+// A mistake on the command line (exit 2, as rugosim's own).
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+int run(int argc, char** argv) {
+  fs::path out_dir = fs::path(RUGOSIM_SOURCE_DIR) / "docs" / "accuracy";
+  int repeats = 3;
+  std::string part = "all";
+  bool out_dir_given = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      fmt::print(
+          "Usage: accuracy_study [OUT_DIR] [--repeats N] [--part all|settings|convergence]\n"
+          "Runs every built-in scene at every preset and along each accuracy knob and\n"
+          "writes accuracy.csv, accuracy.md and pareto.png into OUT_DIR (default\n"
+          "docs/accuracy of the source tree); runs each non-chaotic scene along the step\n"
+          "and writes convergence.csv, convergence.md and convergence.png. N: timed runs\n"
+          "per setting, best kept (3). --part: only the settings or only the convergence.\n");
+      return 0;
+    }
+    if (arg == "--repeats") {
+      char* end = nullptr;
+      const long n = i + 1 < argc ? std::strtol(argv[i + 1], &end, 10) : 0;
+      if (i + 1 >= argc || *end != '\0' || n < 1 || n > 1000)
+        throw UsageError("--repeats expects a whole number from 1 to 1000");
+      repeats = static_cast<int>(n);
+      ++i;
+    } else if (arg == "--part") {
+      part = i + 1 < argc ? argv[i + 1] : "";
+      if (part != "all" && part != "settings" && part != "convergence")
+        throw UsageError("--part expects all, settings or convergence");
+      ++i;
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw UsageError("unknown option " + arg + " (see --help)");
+    } else if (out_dir_given) {
+      throw UsageError("one OUT_DIR expected, got " + out_dir.string() + " and " + arg);
+    } else {
+      out_dir = arg;
+      out_dir_given = true;
+    }
+  }
+  fs::create_directories(out_dir);
+
+  std::vector<SceneFile> scenes;
+  for (const auto& entry : fs::directory_iterator(fs::path(RUGOSIM_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".json") continue;
+    // The benchmark piles measure speed (bench_pile); figure12a and figure12b are the chaotic
+    // piles of the study, and a reference run of 1,000 bodies at 62.5 µs would take hours.
+    if (entry.path().stem().string().rfind("pile_", 0) == 0) continue;
+    SceneFile f;
+    f.name = entry.path().stem().string();
+    f.path = entry.path().string();
+    const SceneLoad load = load_scene_file(f.path);
+    if (!load.ok()) throw std::runtime_error(f.path + " does not load");
+    f.scene = load.scene;
+    f.validation = f.name.rfind("validation_", 0) == 0;
+    scenes.push_back(std::move(f));
+  }
+  std::sort(scenes.begin(), scenes.end(),
+            [](const SceneFile& a, const SceneFile& b) { return a.name < b.name; });
+  if (part != "convergence") settings_part(scenes, out_dir, repeats);
+  if (part != "settings") convergence_part(scenes, out_dir, repeats);
   return 0;
 }
 
