@@ -109,7 +109,7 @@ double observed_order(const std::vector<double>& steps, const std::vector<double
   double n = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     // Relative slack so that 1.25e-4 given as 0.000125 still counts.
-    if (steps[i] > hi * (1 + 1e-9) || steps[i] < lo * (1 - 1e-9) || !(errors[i] > kRoundingFloor))
+    if (steps[i] > hi * (1 + 1e-9) || steps[i] < lo * (1 - 1e-9) || !(errors[i] > kNoiseFloor))
       continue;
     const double x = std::log(steps[i]), y = std::log(errors[i]);
     n += 1.0;
@@ -125,8 +125,8 @@ double observed_order(const std::vector<double>& steps, const std::vector<double
 
 bool decreases_monotonically(const std::vector<double>& errors, double tolerance, int* first_rise) {
   for (std::size_t i = 1; i < errors.size(); ++i) {
-    const double before = std::max(errors[i - 1], kRoundingFloor);
-    if (std::max(errors[i], kRoundingFloor) > before * (1.0 + tolerance)) {
+    const double before = std::max(errors[i - 1], kNoiseFloor);
+    if (std::max(errors[i], kNoiseFloor) > before * (1.0 + tolerance)) {
       if (first_rise != nullptr) *first_rise = static_cast<int>(i);
       return false;
     }

@@ -42,19 +42,21 @@ StateSeries richardson_limit(const StateSeries& x4h, const StateSeries& x2h, con
 // measured on the limit.
 Run run_from_series(const StateSeries& limit, const Run& like);
 
-// Errors at or below this many body radii are rounding: a run that exact is converged, and two
-// such errors are equal whatever their ratio. (A pose of a few radii carries about 1e-15 of
-// rounding per step; tens of thousands of steps make it 1e-11 at most.)
-inline constexpr double kRoundingFloor = 1e-9;
+// Errors at or below this many body radii are below what the step can be asked to resolve:
+// the solvers stop at tolerances of their own (the mid-step solve when no contact velocity
+// changes by more than 1e-6·|g|·h in a sweep; a stick or a slip decided on either side of that
+// at the sliding disk's rolling transition moves it 7e-8 m, 3.5e-7 radii, for the rest of the
+// run). Two such errors are equal whatever their ratio, and a run that close is converged.
+inline constexpr double kNoiseFloor = 1e-6;
 
 // The least-squares slope of log(error) against log(step) over the points with steps in
-// [lo, hi] and an error above kRoundingFloor: the observed order of convergence. NaN where
-// fewer than two points qualify (a scene exact at those steps).
+// [lo, hi] and an error above kNoiseFloor: the observed order of convergence. NaN where
+// fewer than two points qualify (a scene converged at those steps).
 double observed_order(const std::vector<double>& steps, const std::vector<double>& errors,
                       double lo, double hi);
 
 // Whether the errors, coarsest step first, never grow by more than `tolerance` (a share) from
-// one step to the next finer one, errors below kRoundingFloor counted as kRoundingFloor;
+// one step to the next finer one, errors below kNoiseFloor counted as kNoiseFloor;
 // `first_rise` receives the index of the first point that does (or -1).
 bool decreases_monotonically(const std::vector<double>& errors, double tolerance,
                              int* first_rise = nullptr);
@@ -73,7 +75,7 @@ struct SceneConvergence {
   std::string name;
   std::vector<ConvergencePoint> points;  // coarsest first
   double richardson_order = 0.0;         // p of the extrapolation
-  double order = 0.0;                    // observed, 4 ms to 0.125 ms (NaN: exact there)
+  double order = 0.0;                    // observed, 4 ms to 0.125 ms (NaN: converged there)
   bool monotone = false;                 // within kMonotoneTolerance
   int first_rise = -1;                   // index into points, or -1
   std::optional<ClosedFormError> floor;  // the limit against the closed form

@@ -40,11 +40,12 @@ void write_convergence_markdown(const std::filesystem::path& path,
       "they show themselves (p, kept within [0.5, 4]); each run's error is its RMS distance "
       "from that limit over every frame and body, positions and angles in body radii. "
       "\"Monotone\" allows an error {:.0f}% above the coarser step's (noise), and errors below "
-      "{:g} body radii are rounding (\"exact\": no order to fit); the observed order "
+      "{:g} body radii are below the solvers' own tolerances (\"converged\": no order to fit; "
+      "bench/convergence.h says why); the observed order "
       "is the least-squares slope of log error against log step from {:g} to {:g} ms. For the "
       "validation scenes, the floor is the limit's own error against the closed form (the "
       "model's, which no step removes). Plot: `convergence.png`.\n\n",
-      1e3 * first.front().step, 1e3 * first.back().step, 100 * kMonotoneTolerance, kRoundingFloor,
+      1e3 * first.front().step, 1e3 * first.back().step, 100 * kMonotoneTolerance, kNoiseFloor,
       1e3 * kOrderFrom, 1e3 * kOrderTo);
   out << "| scene |";
   for (const ConvergencePoint& p : first)
@@ -63,7 +64,7 @@ void write_convergence_markdown(const std::filesystem::path& path,
     }
     out << fmt::format(
         " {:.2f} | {} | {} | {} |\n", s.richardson_order,
-        std::isnan(s.order) ? std::string("exact") : fmt::format("{:.2f}", s.order),
+        std::isnan(s.order) ? std::string("converged") : fmt::format("{:.2f}", s.order),
         s.monotone
             ? "yes"
             : fmt::format("no (from {:g} ms)",
@@ -132,14 +133,16 @@ set logscale xy
 set grid
 set key bottom right font 'Sans,8'
 set title 'error against the method''s limit, by step'
-set xlabel 'max\_step (ms)'
+set xlabel 'max_step (ms)'
 set ylabel 'RMS distance from the limit (body radii)'
-plot for [i=0:N-1] $conv index i using 1:3 with linespoints lw 1.5 pt 7 ps 0.7 title names[i+1], \
+set xrange [0.05:10]
+plot for [i=0:N-1] $conv index i using 1:3 with linespoints lw 1.5 dt i/6+1 pt i%6+4 ps 0.8 title names[i+1], \
      [0.0625:8] 1e-3*x with lines dt 2 lc rgb '#888888' title 'order 1'
 set title 'error against the method''s limit, by wall time'
 set xlabel 'wall time of the simulation (s)'
 set key off
-plot for [i=0:N-1] $conv index i using 2:3 with linespoints lw 1.5 pt 7 ps 0.7 title names[i+1]
+set autoscale x
+plot for [i=0:N-1] $conv index i using 2:3 with linespoints lw 1.5 dt i/6+1 pt i%6+4 ps 0.8 title names[i+1]
 unset multiplot
 )",
                         scenes.size());

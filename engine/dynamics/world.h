@@ -202,6 +202,7 @@ class World {
   // Runs detection on the current placement, every non-member held still; result in
   // detected_ and detected_pairs_.
   void detect();
+  void detect_initial_contacts();  // manifolds_ and near_pairs_ of the state as it is
   // Adds to detected_ a crossing for every near pair without contact where one body lies wholly
   // inside the other (containment.h): nothing the boundaries show, yet no state to accept.
   void detect_containment();
@@ -256,6 +257,9 @@ class World {
   std::vector<BodyPair> accepted_pairs_;    // its broad-phase pairs
   std::vector<ContactManifold> manifolds_;  // of the state at the end of the last step
   std::vector<BodyPair> near_pairs_;        // its broad-phase pairs
+  // Whether manifolds_ describe the bodies as they are: false until the first step has looked
+  // at the initial state, and again after add_body.
+  bool contacts_known_ = false;
   std::vector<ContactEvent> events_;
   SleepTracker sleep_;
   StepStats stats_;
