@@ -15,6 +15,7 @@ Accuracy finest_at(double step) {
   return Accuracy{.max_step = step,
                   .rest_stride = 1,
                   .mid_step_rest = 1,
+                  .converging_contacts = 1,
                   .rest_sweeps = 1024,
                   .toi_tolerance = 1e-11,
                   .max_bisections = 200,

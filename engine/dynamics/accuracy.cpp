@@ -39,6 +39,10 @@ const std::vector<AccuracyKnob>& accuracy_knobs() {
       {"mid_step_rest", "",
        "1: slow contacts get their impulses at each step's middle; 0: micro-collisions only", true,
        0, false, 1, nullptr, &Accuracy::mid_step_rest},
+      {"converging_contacts", "",
+       "1: contact rules that do not depend on the step (impacts located in time, rest by speed, "
+       "deep contacts lifted); 0: the paper's rules at each step's end",
+       true, 0, false, 1, nullptr, &Accuracy::converging_contacts},
       {"rest_sweeps", "", "Gauss-Seidel sweeps of each mid-step solve at most", true, 1, false,
        100000, nullptr, &Accuracy::rest_sweeps},
       {"toi_tolerance", "s", "time-of-impact bisection stops at this step", false, 0.0, true, 1.0,
@@ -120,6 +124,7 @@ WorldSettings with_accuracy(WorldSettings base, const Accuracy& accuracy) {
   base.max_step = accuracy.max_step;
   base.rest_stride = accuracy.rest_stride;
   base.mid_step_rest = accuracy.mid_step_rest != 0;
+  base.converging_contacts = accuracy.converging_contacts != 0;
   base.rest_sweeps = accuracy.rest_sweeps;
   base.min_step = accuracy.toi_tolerance;
   base.max_bisections = accuracy.max_bisections;

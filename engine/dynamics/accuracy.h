@@ -29,6 +29,11 @@ struct Accuracy {
   // nor slides further than friction lets it, whatever the step; 0: the paper's
   // micro-collisions alone. 1 in every preset (docs/research/resting-contact.md §8.7).
   int mid_step_rest = 1;
+  // 1: contact rules that do not depend on the step (WorldSettings::converging_contacts):
+  // impacts answered where they happen, located by bisection, slow approaches told from impacts
+  // by speed, deep contacts lifted at a rate of their band's; 0: the paper's rules at each
+  // step's end. 1 is what the convergence study converges with (docs/accuracy/convergence.md).
+  int converging_contacts = 0;
   // Gauss-Seidel sweeps of each mid-step solve at most (WorldSettings::rest_sweeps). Where they
   // run out, micro-collisions answer what the solve left: 16 in draft makes figure12a 1.25×
   // cheaper.

@@ -43,8 +43,14 @@ ContactStatics contact_statics(const RigidBody& body_a, const RigidBody& body_b,
   k.band = std::max(c.lambda_a + c.lambda_b, body_a.shape().min_band() + body_b.shape().min_band());
   k.delta = std::clamp(k.band - c.distance, 0.0, k.band);
   k.pressing = pressing_gravity(body_a, body_b, settings.gravity, c.normal);
-  k.resolved_speed = settings.resolved_gap_fraction * c.distance / settings.max_step;
-  if (settings.rest_step > 0.0 && k.delta <= deep_share(settings.rest_depth) * k.band) {
+  // A share of the gap per max_step decides, at a given step, what a step-independent rule
+  // (converging_contacts) decides by speed alone.
+  k.resolved_speed = settings.converging_contacts
+                         ? impact_speed(k)
+                         : settings.resolved_gap_fraction * c.distance / settings.max_step;
+  // (With converging_contacts only a rested pair's contacts get that: contact_resolution.cpp.)
+  if (!settings.converging_contacts && settings.rest_step > 0.0 &&
+      k.delta <= deep_share(settings.rest_depth) * k.band) {
     k.resolved_speed = std::max(k.resolved_speed, k.pressing * settings.rest_step);
   }
   return k;

@@ -3,6 +3,7 @@
 // micro-collision), restitution and friction. Rules in contact_resolution.h.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -43,6 +44,12 @@ struct ContactStatics {
   double pressing = 0.0;        // m/s², g_n
   double resolved_speed = 0.0;  // m/s, approach below which the contact is resolved
 };
+// The speed of a fall through the band, √(2·g_n·λ): the paper's bound between collisions and
+// micro-collisions (§4.3). With WorldSettings::converging_contacts, slower approaches rest and
+// faster ones are impacts, whatever the step.
+inline double impact_speed(const ContactStatics& k) {
+  return std::sqrt(2.0 * k.pressing * k.band);
+}
 ContactStatics contact_statics(const RigidBody& body_a, const RigidBody& body_b, const Contact& c,
                                const ResolutionSettings& settings);
 

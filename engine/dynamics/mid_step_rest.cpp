@@ -1,6 +1,7 @@
 #include "engine/dynamics/mid_step_rest.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 #include <vector>
 
@@ -32,6 +33,7 @@ MidStepRestCounts rest_at_mid_step(std::span<RigidBody> bodies, std::span<const 
                                    const MidStepRestSettings& settings) {
   MidStepRestCounts counts;
   std::vector<SlowContact> contacts;
+  const double g = settings.gravity.norm();
   for (const ContactManifold& m : manifolds) {
     if (m.state() != PairState::kContact) continue;
     if (moves[m.body_a] == 0 && moves[m.body_b] == 0) continue;
@@ -46,7 +48,10 @@ MidStepRestCounts rest_at_mid_step(std::span<RigidBody> bodies, std::span<const 
       s.point = c.point;
       s.normal = c.normal;
       const double band = std::max(c.lambda_a + c.lambda_b, min_band);
-      s.allowance = std::max(0.0, c.distance - (1.0 - settings.rest_depth) * band) / h;
+      const double rest_gap = (1.0 - settings.rest_depth) * band;
+      s.allowance = std::max(0.0, c.distance - rest_gap) / h;
+      if (settings.lift && c.distance < rest_gap && g > 0.0)
+        s.allowance = (c.distance - rest_gap) / std::max(std::sqrt(2.0 * band / g), h);
       counts.rested.back().allowance = std::max(counts.rested.back().allowance, s.allowance);
       s.friction =
           contact_friction(a.friction_coefficient(c.segment_a, c.t_a, settings.friction_gain),

@@ -41,6 +41,11 @@ struct MidStepRestSettings {
   // pile 1.75 s at a fifth, 2.2 s at a half).
   double rest_depth = 0.2;
   SweepSettings sweeps;
+  // WorldSettings::converging_contacts: a contact deeper than the rest depth is lifted back towards
+  // it at (d_r − d)/max(√(2λ/|g|), h) (its allowance negative): in the time a fall through its
+  // band takes, not in one step, so that how fast it rises does not depend on the step. (A band
+  // that grows under a sliding or rolling body makes its contacts deep without any approach.)
+  bool lift = false;
 };
 
 // A body pair whose contacts got mid-step impulses, and the fastest approach any of them was

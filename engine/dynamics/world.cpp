@@ -27,6 +27,8 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 using world_detail::any_crossing;
+using world_detail::BodyPairKey;
+using world_detail::crossing_pairs;
 
 World::World(WorldSettings settings)
     : settings_(std::move(settings)), pipeline_(settings_.narrow_phase), sleep_(settings_.sleep) {
@@ -160,15 +162,13 @@ void World::record_first_crossing(const std::vector<ContactManifold>& manifolds,
 }
 
 void World::resolve(const std::vector<ContactManifold>& manifolds, double time) {
-  const ResolutionSettings resolution{settings_.gravity,
-                                      settings_.friction_gain,
-                                      settings_.max_resolution_passes,
-                                      settings_.max_step,
-                                      settings_.resolved_gap_fraction,
-                                      rest_step_,
-                                      rested_,
-                                      settings_.rest_depth,
-                                      settings_.rest_sweeps};
+  const ResolutionSettings resolution{
+      settings_.gravity, settings_.friction_gain, settings_.max_resolution_passes,
+      settings_.max_step, settings_.resolved_gap_fraction, rest_step_, rested_,
+      settings_.rest_depth, settings_.rest_sweeps,
+      // Slow approaches are left to mid-step rest
+      // only where it runs (not in a withdrawn step).
+      settings_.converging_contacts && rest_step_ > 0.0, answer_now_};
   ++stats_.steps;
   if (any_crossing(manifolds)) {
     ++stats_.crossings;
@@ -196,7 +196,8 @@ void World::rest_at_mid_step(const std::vector<ContactManifold>& manifolds, doub
   if (!settings_.mid_step_rest || rest_withdrawn_) return;
   const MidStepRestSettings rest{
       settings_.gravity, settings_.friction_gain, settings_.rest_depth,
-      rest_sweep_settings(settings_.gravity, settings_.max_step, settings_.rest_sweeps)};
+      rest_sweep_settings(settings_.gravity, settings_.max_step, settings_.rest_sweeps),
+      settings_.converging_contacts};
   MidStepRestCounts counts = rugosim::rest_at_mid_step(bodies_, moving_, manifolds, h, rest);
   rest_step_ = h;
   rested_ = std::move(counts.rested);
@@ -218,11 +219,13 @@ void World::step(double h) {
     for (const std::size_t i : members_)
       before_rest_[i] = bodies_[i].state();
   }
+  mark_start_depths(manifolds_, /*new_step=*/true);
   rest_at_mid_step(manifolds_, h);
   save_start();
   place_at(h);
   detect();
-  if (!any_crossing(detected_)) {
+  ImpactPairs impacts;
+  if (!overshoots(detected_, &impacts)) {
     consecutive_fallbacks_ = 0;
     // The detection's scratch becomes the state's record (the next detection overwrites it).
     std::swap(manifolds_, detected_);
@@ -240,10 +243,13 @@ void World::step(double h) {
     if (moving_[pair.a] != 0 && moving_[pair.b] != 0) islands.unite(pair.a, pair.b);
   }
   std::vector<std::uint8_t> crossing_root(bodies_.size(), 0);
-  for (const ContactManifold& m : detected_) {
-    if (m.state() != PairState::kIntersecting) continue;
-    if (moving_[m.body_a] != 0) crossing_root[islands.root(m.body_a)] = 1;
-    if (moving_[m.body_b] != 0) crossing_root[islands.root(m.body_b)] = 1;
+  std::vector<BodyPairKey> backing = crossing_pairs(detected_);
+  // Impacts to locate back off too.
+  backing.insert(backing.end(), impacts.deep.begin(), impacts.deep.end());
+  backing.insert(backing.end(), impacts.arriving.begin(), impacts.arriving.end());
+  for (const auto& [a, b] : backing) {
+    if (moving_[a] != 0) crossing_root[islands.root(a)] = 1;
+    if (moving_[b] != 0) crossing_root[islands.root(b)] = 1;
   }
   join_islands_within_reach(islands, crossing_root, h);
   std::vector<std::size_t> crossing_members;
@@ -275,8 +281,9 @@ void World::step(double h) {
   // 1, 5, 13, 19, 25 with mid-step rest forced: thousands of accepted crossings). Micro-
   // collisions answer such an island's contacts for the rest of the step, as they always did.
   // Where no member got an impulse the trial stands as it is (no second trial of the same move).
+  // An island backing off only to locate an impact keeps its impulses: nothing crossed.
   bool withdraw_rest = false;
-  if (rest_step_ > 0.0) {
+  if (rest_step_ > 0.0 && any_crossing(detected_)) {
     rest_withdrawn_ = true;
     for (const std::size_t i : members_) {
       const BodyState& before = before_rest_[i];

@@ -53,6 +53,7 @@ std::vector<NumericOption> table() {
     rows.push_back({command, "--newton-iterations", {}, kPast64Bits});
     rows.push_back({command, "--rest-stride", {}, kPast64Bits});
     rows.push_back({command, "--mid-step-rest", {"0"}, kPast64Bits});
+    rows.push_back({command, "--converging-contacts", {"0"}, kPast64Bits});
     rows.push_back({command, "--rest-sweeps", {}, kPast64Bits});
     rows.push_back({command, "--seed-depth", {}, kPast64Bits});
     rows.push_back({command, "--contact-passes", {}, kPast64Bits});

@@ -83,8 +83,10 @@ std::string scene_path(const std::string& name) {
 }
 
 // Two built-in scenes, each at 2, 1 and 0.5 ms against the limit of the runs at 0.25, 0.125
-// and 0.0625 ms: each step's error is below the coarser one's (the study's 10% for noise) and
-// the order is at least 1.
+// and 0.0625 ms, with the study's finest knobs (converging_contacts 1): each step's error is
+// below the coarser one's (the study's 10% for noise) and the order is at least 1. Both
+// scenes' errors did not fall with the step under the paper's rules at step ends (a tumbling
+// pebble, a rough disk rolling onto wider bands: docs/accuracy/convergence.md).
 class BuiltInScene : public testing::TestWithParam<const char*> {};
 
 TEST_P(BuiltInScene, ErrorsFallWithTheStep) {
@@ -107,7 +109,7 @@ TEST_P(BuiltInScene, ErrorsFallWithTheStep) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Convergence, BuiltInScene,
-                         testing::Values("figure06_type1_type1", "validation_incline_below"));
+                         testing::Values("figure09_constant", "figure06_type4_type2"));
 
 }  // namespace
 }  // namespace rugosim::study
