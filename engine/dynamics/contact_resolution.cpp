@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <utility>
 
 #include "engine/dynamics/collision_impulse.h"
 #include "engine/dynamics/contact_plan.h"
@@ -91,16 +90,13 @@ ResolutionCounts ContactResolver::resolve(std::span<RigidBody> bodies,
     plans[i].statics = contact_statics(bodies[m.body_a], bodies[m.body_b], c, settings);
     const RestedPair* rested = find_rested(settings.rested, m.body_a, m.body_b);
     ContactStatics& k = plans[i].statics;
-    const bool deep = k.delta > deep_share(settings.rest_depth) * k.band;
+    // Deep contacts get the paper's hop; with converging_contacts there are none (the mid-step
+    // lift raises them) and every contact of a rested pair is left its allowance.
+    const bool deep =
+        !settings.converging_contacts && k.delta > deep_share(settings.rest_depth) * k.band;
     if (rested != nullptr && !deep) {
       k.resolved_speed =
           std::max(k.resolved_speed, k.pressing * settings.rest_step + rested->allowance);
-    }
-    if (settings.converging_contacts &&
-        ((rested != nullptr && deep) ||
-         std::binary_search(settings.located.begin(), settings.located.end(),
-                            std::make_pair(m.body_a, m.body_b)))) {
-      k.resolved_speed = 0.0;
     }
     plans[i].state_a = contact_state(bodies[m.body_a], c.point);
     plans[i].state_b = contact_state(bodies[m.body_b], c.point);

@@ -68,12 +68,10 @@ struct ResolutionSettings {
   // Sweeps of a mid-step solve at most (WorldSettings::rest_sweeps): a rigid cluster's stop is
   // one.
   int rest_sweeps = 64;
-  // WorldSettings::converging_contacts: a contact of `located` (pairs whose depth was located in
-  // time at this state, sorted by (body_a, body_b)), or one deeper than deep_share of its band
-  // in a rested pair, is answered at any approach, not only past the resolved speed (whose
-  // c·d/max_step would let the step decide whether it gets its impulse).
+  // WorldSettings::converging_contacts, where mid-step rest runs: an approach is resolved below
+  // impact_speed (contact_plan.h), not below resolved_gap_fraction of the gap per max_step, and
+  // a deep contact of a rested pair gets no hop (the mid-step lift raises it).
   bool converging_contacts = false;
-  std::span<const std::pair<std::size_t, std::size_t>> located;
 };
 
 struct ResolutionCounts {

@@ -162,13 +162,13 @@ void World::record_first_crossing(const std::vector<ContactManifold>& manifolds,
 }
 
 void World::resolve(const std::vector<ContactManifold>& manifolds, double time) {
-  const ResolutionSettings resolution{
-      settings_.gravity, settings_.friction_gain, settings_.max_resolution_passes,
-      settings_.max_step, settings_.resolved_gap_fraction, rest_step_, rested_,
-      settings_.rest_depth, settings_.rest_sweeps,
-      // Slow approaches are left to mid-step rest
-      // only where it runs (not in a withdrawn step).
-      settings_.converging_contacts && rest_step_ > 0.0, answer_now_};
+  const ResolutionSettings resolution{settings_.gravity, settings_.friction_gain,
+                                      settings_.max_resolution_passes, settings_.max_step,
+                                      settings_.resolved_gap_fraction, rest_step_, rested_,
+                                      settings_.rest_depth, settings_.rest_sweeps,
+                                      // Slow approaches are left to mid-step rest
+                                      // only where it runs (not in a withdrawn step).
+                                      settings_.converging_contacts && rest_step_ > 0.0};
   ++stats_.steps;
   if (any_crossing(manifolds)) {
     ++stats_.crossings;
@@ -219,13 +219,13 @@ void World::step(double h) {
     for (const std::size_t i : members_)
       before_rest_[i] = bodies_[i].state();
   }
-  mark_start_depths(manifolds_, /*new_step=*/true);
+  mark_start_contacts(manifolds_, /*new_step=*/true);
   rest_at_mid_step(manifolds_, h);
   save_start();
   place_at(h);
   detect();
-  ImpactPairs impacts;
-  if (!overshoots(detected_, &impacts)) {
+  std::vector<BodyPairKey> arriving;
+  if (!overshoots(detected_, &arriving)) {
     consecutive_fallbacks_ = 0;
     // The detection's scratch becomes the state's record (the next detection overwrites it).
     std::swap(manifolds_, detected_);
@@ -245,8 +245,7 @@ void World::step(double h) {
   std::vector<std::uint8_t> crossing_root(bodies_.size(), 0);
   std::vector<BodyPairKey> backing = crossing_pairs(detected_);
   // Impacts to locate back off too.
-  backing.insert(backing.end(), impacts.deep.begin(), impacts.deep.end());
-  backing.insert(backing.end(), impacts.arriving.begin(), impacts.arriving.end());
+  backing.insert(backing.end(), arriving.begin(), arriving.end());
   for (const auto& [a, b] : backing) {
     if (moving_[a] != 0) crossing_root[islands.root(a)] = 1;
     if (moving_[b] != 0) crossing_root[islands.root(b)] = 1;

@@ -109,9 +109,6 @@ struct WorldSettings {
   //   - a pair arriving within its bands faster than impact_speed (contact_plan.h) gets its
   //     collision where it arrived, located by bisection down to min_step as a crossing is,
   //     not where the step's end finds it, somewhere in the band;
-  //   - a contact that sinks past deep_share of its band within a step is located the same way
-  //     and gets its micro-collision there; a deep contact of a rested pair gets it at any
-  //     approach;
   //   - an approach counts as resolved by its speed, impact_speed, not by resolved_gap_fraction
   //     of its gap per max_step;
   //   - a contact deeper than the rest depth is lifted back towards it at mid-step at a rate set
@@ -240,28 +237,20 @@ class World {
   // Bisects the members' move of dt_full (s) whose end crosses; returns the accepted dt (0 after
   // a min-step fallback), leaves the members there and the manifolds in accepted_.
   double back_off(double dt_full);
-  // Impacts located in time (WorldSettings::converging_contacts; world_impacts.cpp). The deepest
-  // share of its band a pair's contacts reach into it.
-  double depth_share(const ContactManifold& m) const;
-  // Remembers each pair's depth share at the start of a (sub-)step, and forgets the pairs
-  // located since the step began when `new_step`.
-  void mark_start_depths(const std::vector<ContactManifold>& start, bool new_step);
-  // Impacts to locate, each list sorted by pair.
-  struct ImpactPairs {
-    std::vector<std::pair<std::size_t, std::size_t>> deep;      // sank past deep_share
-    std::vector<std::pair<std::size_t, std::size_t>> arriving;  // arrived within their bands fast
-  };
-  // Whether a trial state must be backed off: a pair crosses, or (converging_contacts) a pair not
-  // yet located in this step arrives within its bands faster than impact_speed, or reaches deeper
-  // than deep_share of its band having been shallower at the (sub-)step's start. `impacts` (if
-  // given) receives the latter two kinds.
+  // Impacts located in time (WorldSettings::converging_contacts; world_impacts.cpp). Remembers
+  // the pairs within their bands at the start of a (sub-)step, and forgets the pairs located
+  // since the step began when `new_step`.
+  void mark_start_contacts(const std::vector<ContactManifold>& start, bool new_step);
+  // Whether a trial state must be backed off: a pair crosses, or (converging_contacts) a pair
+  // outside its bands at the (sub-)step's start and not yet located in this step arrives within
+  // them faster than impact_speed. `arriving` (if given) receives the latter, sorted.
   bool overshoots(const std::vector<ContactManifold>& manifolds,
-                  ImpactPairs* impacts = nullptr) const;
+                  std::vector<std::pair<std::size_t, std::size_t>>* arriving = nullptr) const;
   // Whether a contact of the pair approaches faster than impact_speed (contact_plan.h).
   bool arrives_fast(const ContactManifold& m) const;
-  // The state accepted now holds these impacts where they happened: the deep ones are answered
-  // at its resolution (answer_now_); none is located again in this step.
-  void locate(const ImpactPairs& impacts);
+  // The state accepted now holds these arrivals where they happened; none is located again in
+  // this step.
+  void locate(const std::vector<std::pair<std::size_t, std::size_t>>& arriving);
   // At a min-step fallback: moves the touching pairs among `pairs` (sorted) apart by twice the
   // touching depth, unless that crosses another pair. Leaves the manifolds of the state it
   // holds in detected_.
@@ -310,12 +299,11 @@ class World {
   // members of this step went on without them (World::step).
   std::vector<BodyState> before_rest_;
   bool rest_withdrawn_ = false;
-  // converging_contacts: depth shares at the (sub-)step's start, sorted by pair; the pairs located
-  // in this step (each at most once a step, so that a contact that no impulse lifts cannot
-  // make the step crawl); those to answer at the state being resolved.
-  std::vector<std::pair<std::pair<std::size_t, std::size_t>, double>> start_depths_;
+  // converging_contacts: the pairs within their bands at the (sub-)step's start, and those
+  // located in this step (each at most once a step, so that an arrival no impulse turns back
+  // cannot make the step crawl); both sorted.
+  std::vector<std::pair<std::size_t, std::size_t>> start_contacts_;
   std::vector<std::pair<std::size_t, std::size_t>> located_;
-  std::vector<std::pair<std::size_t, std::size_t>> answer_now_;
 };
 
 }  // namespace rugosim

@@ -22,8 +22,8 @@ double World::back_off(double dt_full) {
   double lo = 0.0;
   double hi = dt_full;
   std::vector<BodyPairKey> pairs = crossing_pairs(detected_);
-  ImpactPairs impacts, impacts_here;  // to locate (world_impacts.cpp)
-  overshoots(detected_, &impacts);
+  std::vector<BodyPairKey> arriving, arriving_here;  // impacts to locate (world_impacts.cpp)
+  overshoots(detected_, &arriving);
   bool have_lo = false;
   // min_step bounds the search once it has made progress; before that, halving goes on below
   // it, down to kFinestStepShare of it (and within max_bisections): a gap thinner than the
@@ -36,10 +36,10 @@ double World::back_off(double dt_full) {
     place_at(mid);
     detect();
     ++stats_.bisections;
-    if (overshoots(detected_, &impacts_here)) {
+    if (overshoots(detected_, &arriving_here)) {
       hi = mid;
       pairs = crossing_pairs(detected_);
-      std::swap(impacts, impacts_here);
+      arriving.swap(arriving_here);
       continue;
     }
     lo = mid;
@@ -47,39 +47,26 @@ double World::back_off(double dt_full) {
     accepted_pairs_ = detected_pairs_;
     have_lo = true;
     // An impact to locate is bisected down to min_step: its time is the answer's.
-    if (impacts.deep.empty() && impacts.arriving.empty() &&
-        touches_crossing_pair(detected_, pairs)) {
+    if (arriving.empty() && touches_crossing_pair(detected_, pairs)) {
       consecutive_fallbacks_ = 0;
       return mid;
     }
   }
-  const bool impacts_only = pairs.empty() && impacts.deep.empty() && !impacts.arriving.empty();
-  if (impacts_only) {
+  if (pairs.empty() && !arriving.empty()) {
     // Arrivals located: answered at hi, just within their bands (lo has them outside).
     place_at(hi);
     detect();
     accepted_ = detected_;
     accepted_pairs_ = detected_pairs_;
     consecutive_fallbacks_ = 0;
-    locate(impacts);
+    locate(arriving);
     return hi;
   }
   if (have_lo) {
-    // No contact caught yet, but progress: the gap closes on a later sub-step. Or a contact
-    // that sank located: answered at lo, just short of the depth.
+    // No contact caught yet, but progress: the gap closes on a later sub-step.
     place_at(lo);
     consecutive_fallbacks_ = 0;
-    impacts.arriving.clear();  // outside their bands at lo: found again from there
-    locate(impacts);
     return lo;
-  }
-  if (pairs.empty() && !impacts.deep.empty()) {
-    // Deep at once, crossing nothing: answered where it is (the state tried last, at hi).
-    accepted_ = detected_;
-    accepted_pairs_ = detected_pairs_;
-    consecutive_fallbacks_ = 0;
-    locate(impacts);
-    return hi;
   }
   ++stats_.fallbacks;
   if (++consecutive_fallbacks_ > kMaxConsecutiveFallbacks) {
@@ -227,8 +214,7 @@ void World::advance_crossing_members(double h, bool trial_crosses) {
     const double dt = back_off(dt_full);
     local = dt == dt_full ? h : local + dt;
     resolve(accepted_, time_ + local);
-    answer_now_.clear();
-    mark_start_depths(accepted_, /*new_step=*/false);
+    mark_start_contacts(accepted_, /*new_step=*/false);
   }
 }
 
