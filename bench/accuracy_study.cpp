@@ -220,10 +220,11 @@ void write_markdown(const fs::path& path, const std::vector<Summary>& all,
   out << fmt::format(
       "\nThe last column is the reference's own RMS distance from a run at a quarter of its "
       "step ({:.3g} µs), in body radii: where it is as large as the presets' errors, those "
-      "errors measure the reference as much as the presets. The contact model does not "
-      "converge with the step on figure scenes whose contacts grow deeper than 60% of their "
-      "band (a micro-collision's hop fires at one step and not at another: "
-      "docs/research/resting-contact.md §8.8).\n",
+      "errors measure the reference as much as the presets. The reference runs with "
+      "converging_contacts 1 (contact rules that do not depend on the step, under which it "
+      "converges: convergence.md); the presets do not yet, so where a figure scene's error is "
+      "about the same at every preset, it is the difference between the two contact models, "
+      "not the step's.\n",
       1e6 * kReferenceCheckShare * reference_accuracy().max_step);
   out << "\n## The closed forms at each preset\n\n| scene | quantity |";
   for (const std::string& p : presets)

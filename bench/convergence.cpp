@@ -120,7 +120,7 @@ double observed_order(const std::vector<double>& steps, const std::vector<double
     sxy += x * y;
   }
   const double denominator = n * sxx - sx * sx;
-  return n >= 2.0 && denominator > 0.0 ? (n * sxy - sx * sy) / denominator
+  return n >= 3.0 && denominator > 0.0 ? (n * sxy - sx * sy) / denominator
                                        : std::numeric_limits<double>::quiet_NaN();
 }
 

@@ -51,7 +51,8 @@ inline constexpr double kNoiseFloor = 1e-6;
 
 // The least-squares slope of log(error) against log(step) over the points with steps in
 // [lo, hi] and an error above kNoiseFloor: the observed order of convergence. NaN where
-// fewer than two points qualify (a scene converged at those steps).
+// fewer than three points qualify (a scene converged at those steps: two points make a slope
+// of whatever the first drop into the noise was).
 double observed_order(const std::vector<double>& steps, const std::vector<double>& errors,
                       double lo, double hi);
 

@@ -116,7 +116,7 @@ void write_convergence_plot(const std::filesystem::path& path,
     for (const ConvergencePoint& p : s.points) {
       // The finest run sits on the limit's Richardson line by construction; it is drawn too.
       data +=
-          fmt::format("{:.6g} {:.6g} {:.6g}\n", 1e3 * p.step, p.wall_s, std::max(p.error, 1e-12));
+          fmt::format("{:.6g} {:.6g} {:.6g}\n", 1e3 * p.step, p.wall_s, std::max(p.error, 1e-9));
     }
     data += "\n\n";
   }
@@ -127,6 +127,7 @@ void write_convergence_plot(const std::filesystem::path& path,
     script += fmt::format("{}{}", i == 0 ? "" : ", ", app::gnuplot_quote(scenes[i].name));
   }
   script += "]\n";
+  script += fmt::format("NOISE = {:g}\n", kNoiseFloor);
   script += fmt::format(R"(N = {}
 set multiplot layout 1,2
 set logscale xy
@@ -136,8 +137,10 @@ set title 'error against the method''s limit, by step'
 set xlabel 'max_step (ms)'
 set ylabel 'RMS distance from the limit (body radii)'
 set xrange [0.05:10]
+set yrange [1e-9:0.1]
 plot for [i=0:N-1] $conv index i using 1:3 with linespoints lw 1.5 dt i/6+1 pt i%6+4 ps 0.8 title names[i+1], \
-     [0.0625:8] 1e-3*x with lines dt 2 lc rgb '#888888' title 'order 1'
+     [0.0625:8] 1e-3*x with lines dt 2 lc rgb '#888888' title 'order 1', \
+     [0.0625:8] NOISE with lines dt 3 lc rgb '#bbbbbb' title 'noise floor (below: plotted at 1e-9)'
 set title 'error against the method''s limit, by wall time'
 set xlabel 'wall time of the simulation (s)'
 set key off
