@@ -3,12 +3,32 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <string>
 
 #include <fmt/core.h>
 
 #include "render/app/gnuplot.h"
 
 namespace rugosim::study {
+namespace {
+
+// A Markdown table's header: the `lead` columns, one column per step, the `tail` columns.
+std::string step_header(const std::vector<ConvergencePoint>& steps,
+                        const std::vector<std::string>& lead,
+                        const std::vector<std::string>& tail) {
+  std::string head = "|", rule = "|";
+  for (const std::string& name : lead)
+    head += " " + name + " |";
+  for (const ConvergencePoint& p : steps)
+    head += fmt::format(" {:g} ms |", 1e3 * p.step);
+  for (const std::string& name : tail)
+    head += " " + name + " |";
+  for (std::size_t i = 0; i < lead.size() + steps.size() + tail.size(); ++i)
+    rule += "---|";
+  return head + "\n" + rule + "\n";
+}
+
+}  // namespace
 
 void write_convergence_csv(const std::filesystem::path& path,
                            const std::vector<SceneConvergence>& scenes) {
@@ -47,13 +67,7 @@ void write_convergence_markdown(const std::filesystem::path& path,
       "model's, which no step removes). Plot: `convergence.png`.\n\n",
       1e3 * first.front().step, 1e3 * first.back().step, 100 * kMonotoneTolerance, kNoiseFloor,
       1e3 * kOrderFrom, 1e3 * kOrderTo);
-  out << "| scene |";
-  for (const ConvergencePoint& p : first)
-    out << fmt::format(" {:g} ms |", 1e3 * p.step);
-  out << " p | order | monotone | floor |\n|---|";
-  for (std::size_t i = 0; i < first.size() + 4; ++i)
-    out << "---|";
-  out << "\n";
+  out << step_header(first, {"scene"}, {"p", "order", "monotone", "floor"});
   for (const SceneConvergence& s : scenes) {
     out << "| " << s.name << " |";
     for (std::size_t i = 0; i < s.points.size(); ++i) {
@@ -72,13 +86,8 @@ void write_convergence_markdown(const std::filesystem::path& path,
         s.floor ? fmt::format("{:.2e}", s.floor->error) : std::string("—"));
   }
   out << "\n↑: a rise of more than the tolerance over the coarser step.\n\n"
-         "Wall time of the simulation alone, ms:\n\n| scene |";
-  for (const ConvergencePoint& p : first)
-    out << fmt::format(" {:g} ms |", 1e3 * p.step);
-  out << "\n|---|";
-  for (std::size_t i = 0; i < first.size(); ++i)
-    out << "---|";
-  out << "\n";
+         "Wall time of the simulation alone, ms:\n\n"
+      << step_header(first, {"scene"}, {});
   for (const SceneConvergence& s : scenes) {
     out << "| " << s.name << " |";
     for (const ConvergencePoint& p : s.points)
@@ -90,13 +99,7 @@ void write_convergence_markdown(const std::filesystem::path& path,
     any_closed = any_closed || s.floor.has_value();
   if (!any_closed) return;
   out << "\nThe closed forms along the step (each run's relative error), and the limit's:\n\n"
-         "| scene | quantity |";
-  for (const ConvergencePoint& p : first)
-    out << fmt::format(" {:g} ms |", 1e3 * p.step);
-  out << " limit |\n|---|---|";
-  for (std::size_t i = 0; i < first.size() + 1; ++i)
-    out << "---|";
-  out << "\n";
+      << step_header(first, {"scene", "quantity"}, {"limit"});
   for (const SceneConvergence& s : scenes) {
     if (!s.floor) continue;
     for (std::size_t q = 0; q < s.floor->parts.size(); ++q) {
