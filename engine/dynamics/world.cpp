@@ -31,7 +31,10 @@ using world_detail::BodyPairKey;
 using world_detail::crossing_pairs;
 
 World::World(WorldSettings settings)
-    : settings_(std::move(settings)), pipeline_(settings_.narrow_phase), sleep_(settings_.sleep) {
+    : settings_(std::move(settings)),
+      pipeline_(settings_.narrow_phase),
+      sleep_(settings_.sleep),
+      locator_(settings_.narrow_phase) {
   if (!settings_.gravity.allFinite()) throw std::invalid_argument("gravity must be finite");
   if (!(std::isfinite(settings_.friction_gain) && settings_.friction_gain >= 0.0)) {
     throw std::invalid_argument("friction_gain must be finite and >= 0 (1/m)");

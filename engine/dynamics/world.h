@@ -251,6 +251,14 @@ class World {
   // The state accepted now holds these arrivals where they happened; none is located again in
   // this step.
   void locate(const std::vector<std::pair<std::size_t, std::size_t>>& arriving);
+  // When the members' move of dt_full (s) crosses nothing but brings pairs within their bands
+  // too fast: the earliest of those pairs' arrival times, each bisected on its own two bodies
+  // (a pair's narrow phase, not the island's detection), then confirmed by one detection of
+  // the island there. Returns the accepted dt with the members there and the manifolds in
+  // accepted_, or nothing when the confirmation finds more (a crossing, another arrival); then
+  // detected_ holds the members' state at `*hi` (s), which still overshoots, for back_off to
+  // bisect below.
+  std::optional<double> locate_arrivals(double dt_full, double* hi);
   // At a min-step fallback: moves the touching pairs among `pairs` (sorted) apart by twice the
   // touching depth, unless that crosses another pair. Leaves the manifolds of the state it
   // holds in detected_.
@@ -304,6 +312,7 @@ class World {
   // cannot make the step crawl); both sorted.
   std::vector<std::pair<std::size_t, std::size_t>> start_contacts_;
   std::vector<std::pair<std::size_t, std::size_t>> located_;
+  BodyPairCollider locator_;  // locate_arrivals' narrow phase for one pair at a time
 };
 
 }  // namespace rugosim

@@ -3,6 +3,7 @@
 // of advance_crossing_members; islands within reach of one join it; a pair held touching at the
 // edge of the touching depth is moved apart (push_touching_apart).
 #include <algorithm>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -21,6 +22,9 @@ using world_detail::touches_crossing_pair;
 double World::back_off(double dt_full) {
   double lo = 0.0;
   double hi = dt_full;
+  if (settings_.converging_contacts && !any_crossing(detected_)) {
+    if (const std::optional<double> dt = locate_arrivals(dt_full, &hi)) return *dt;
+  }
   std::vector<BodyPairKey> pairs = crossing_pairs(detected_);
   std::vector<BodyPairKey> arriving, arriving_here;  // impacts to locate (world_impacts.cpp)
   overshoots(detected_, &arriving);
