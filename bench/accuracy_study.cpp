@@ -28,6 +28,7 @@
 #include "accuracy_metrics.h"
 #include "convergence_report.h"
 #include "engine/scene/scene_loader.h"
+#include "pile_report.h"
 #include "render/app/gnuplot.h"
 
 namespace rugosim::study {
@@ -409,6 +410,30 @@ void convergence_part(const std::vector<SceneFile>& scenes, const fs::path& out_
              out_dir.string());
 }
 
+// The chaotic piles (figure12a, figure12b) by the statistics of an ensemble per preset and at
+// the finest settings: piles.csv, piles.md.
+void piles_part(const std::vector<SceneFile>& scenes, const fs::path& out_dir,
+                std::size_t members) {
+  std::vector<PileEnsemble> ensembles;
+  for (const SceneFile& f : scenes) {
+    if (f.name.rfind("figure12", 0) != 0) continue;
+    std::vector<std::pair<std::string, Accuracy>> settings;
+    for (const std::string& name : accuracy_preset_names())
+      settings.emplace_back(name, *accuracy_preset(name));
+    settings.emplace_back("finest", finest_at(convergence_steps().back()));
+    for (const auto& [label, accuracy] : settings) {
+      ensembles.push_back(run_pile_ensemble(f.name, f.scene, f.path, label, accuracy, members));
+      const PileEnsemble& e = ensembles.back();
+      fmt::print(stderr, "{} {:8} {:7.2f} s  settle {:.2f}±{:.2f} s  height {:.4f}±{:.4f} m\n",
+                 f.name, label, e.wall_s, e.settle_time().mean, e.settle_time().half_width,
+                 e.com_height().mean, e.com_height().half_width);
+    }
+  }
+  write_piles_csv(out_dir / "piles.csv", ensembles);
+  write_piles_markdown(out_dir / "piles.md", ensembles);
+  fmt::print(stderr, "wrote {}/piles.csv and piles.md\n", out_dir.string());
+}
+
 // A mistake on the command line (exit 2, as rugosim's own).
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -417,18 +442,22 @@ struct UsageError : std::runtime_error {
 int run(int argc, char** argv) {
   fs::path out_dir = fs::path(RUGOSIM_SOURCE_DIR) / "docs" / "accuracy";
   int repeats = 3;
+  std::size_t members = 16;
   std::string part = "all";
   bool out_dir_given = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "-h" || arg == "--help") {
       fmt::print(
-          "Usage: accuracy_study [OUT_DIR] [--repeats N] [--part all|settings|convergence]\n"
+          "Usage: accuracy_study [OUT_DIR] [--repeats N] [--members M]\n"
+          "                      [--part all|settings|convergence|piles]\n"
           "Runs every built-in scene at every preset and along each accuracy knob and\n"
           "writes accuracy.csv, accuracy.md and pareto.png into OUT_DIR (default\n"
           "docs/accuracy of the source tree); runs each non-chaotic scene along the step\n"
-          "and writes convergence.csv, convergence.md and convergence.png. N: timed runs\n"
-          "per setting, best kept (3). --part: only the settings or only the convergence.\n");
+          "and writes convergence.csv, convergence.md and convergence.png; runs the piles\n"
+          "(figure12a, figure12b) as ensembles of M perturbed copies (16) per preset and\n"
+          "at the finest settings and writes piles.csv and piles.md. N: timed runs per\n"
+          "setting, best kept (3). --part: only one of the three.\n");
       return 0;
     }
     if (arg == "--repeats") {
@@ -438,10 +467,17 @@ int run(int argc, char** argv) {
         throw UsageError("--repeats expects a whole number from 1 to 1000");
       repeats = static_cast<int>(n);
       ++i;
+    } else if (arg == "--members") {
+      char* end = nullptr;
+      const long n = i + 1 < argc ? std::strtol(argv[i + 1], &end, 10) : 0;
+      if (i + 1 >= argc || *end != '\0' || n < 2 || n > 1000)
+        throw UsageError("--members expects a whole number from 2 to 1000");
+      members = static_cast<std::size_t>(n);
+      ++i;
     } else if (arg == "--part") {
       part = i + 1 < argc ? argv[i + 1] : "";
-      if (part != "all" && part != "settings" && part != "convergence")
-        throw UsageError("--part expects all, settings or convergence");
+      if (part != "all" && part != "settings" && part != "convergence" && part != "piles")
+        throw UsageError("--part expects all, settings, convergence or piles");
       ++i;
     } else if (!arg.empty() && arg[0] == '-') {
       throw UsageError("unknown option " + arg + " (see --help)");
@@ -474,8 +510,9 @@ int run(int argc, char** argv) {
   }
   std::sort(scenes.begin(), scenes.end(),
             [](const SceneFile& a, const SceneFile& b) { return a.name < b.name; });
-  if (part != "convergence") settings_part(scenes, out_dir, repeats);
-  if (part != "settings") convergence_part(scenes, out_dir, repeats);
+  if (part == "all" || part == "settings") settings_part(scenes, out_dir, repeats);
+  if (part == "all" || part == "convergence") convergence_part(scenes, out_dir, repeats);
+  if (part == "all" || part == "piles") piles_part(scenes, out_dir, members);
   return 0;
 }
 
