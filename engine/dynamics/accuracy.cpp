@@ -97,6 +97,7 @@ std::optional<Accuracy> accuracy_preset(std::string_view name) {
   if (name == "precise") {
     return Accuracy{.max_step = 2.5e-4,
                     .rest_stride = 1,
+                    .converging_contacts = 1,
                     .toi_tolerance = 1e-10,
                     .max_bisections = 80,
                     .newton_tolerance = 1e-13,
