@@ -1,6 +1,7 @@
 #include "pile_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <string>
@@ -44,6 +45,28 @@ constexpr Statistic kStatistics[] = {
     {"contacts per body", "{:.2f}", &PileEnsemble::mean_contacts},
 };
 
+// The statistics on which `e`'s mean is farther from the finest's than a cheaper setting's
+// (one listed before it for the same scene) by more than the two confidence intervals together:
+// worse than that cheaper setting at 95% confidence, or "—".
+std::string farther_than_cheaper(const std::vector<PileEnsemble>& ensembles, const PileEnsemble& e,
+                                 const PileEnsemble& finest) {
+  std::string out;
+  for (const Statistic& s : kStatistics) {
+    const Estimate mine = (e.*s.get)(), target = (finest.*s.get)();
+    for (const PileEnsemble& cheaper : ensembles) {
+      if (&cheaper == &e) break;
+      if (cheaper.scene != e.scene) continue;
+      const Estimate theirs = (cheaper.*s.get)();
+      if (std::abs(mine.mean - target.mean) >
+          std::abs(theirs.mean - target.mean) + mine.half_width + theirs.half_width) {
+        out += fmt::format("{}{} (than {})", out.empty() ? "" : ", ", s.name, cheaper.setting);
+        break;
+      }
+    }
+  }
+  return out.empty() ? "—" : out;
+}
+
 }  // namespace
 
 void write_piles_csv(const std::filesystem::path& path,
@@ -80,7 +103,9 @@ void write_piles_markdown(const std::filesystem::path& path,
       "within each one's contact bands at the end (from a detection of every pair, asleep or "
       "not). Estimates are means ± the half-width of their 95% confidence interval (Student's "
       "t); \"differs\" lists the statistics whose mean differs from the finest setting's by "
-      "Welch's t-test at 95%, \"—\" where none does. finest: max_step 62.5 µs and the finest "
+      "Welch's t-test at 95%, \"—\" where none does; the last column the statistics on which a "
+      "setting is farther from the finest than a cheaper one by more than both confidence "
+      "intervals together (worse at 95% confidence). finest: max_step 62.5 µs and the finest "
       "of every other knob, with converging_contacts 1 (the figure scenes' reference).\n",
       ensembles.front().members.size(), kEnsembleShare, kSettledShare, kSettledShare);
   std::vector<std::string> scenes;
@@ -95,10 +120,11 @@ void write_piles_markdown(const std::filesystem::path& path,
     out << "\n## " << scene << "\n\n| setting | wall s (all runs) |";
     for (const Statistic& s : kStatistics)
       out << " " << s.name << " |";
-    out << " contacts per body, share of bodies | differs from finest |\n|---|---|";
+    out << " contacts per body, share of bodies | differs from finest | farther from finest than "
+           "a cheaper setting |\n|---|---|";
     for (std::size_t i = 0; i < std::size(kStatistics); ++i)
       out << "---|";
-    out << "---|---|\n";
+    out << "---|---|---|\n";
     for (const PileEnsemble& e : ensembles) {
       if (e.scene != scene) continue;
       out << fmt::format("| {} | {:.2f} |", e.setting, e.wall_s);
@@ -115,6 +141,8 @@ void write_piles_markdown(const std::filesystem::path& path,
           << (&e == finest      ? ""
               : differs.empty() ? "—"
                                 : differs)
+          << " | "
+          << (finest == nullptr || &e == finest ? "" : farther_than_cheaper(ensembles, e, *finest))
           << " |\n";
     }
   }
