@@ -26,8 +26,10 @@
 #include <fmt/core.h>
 
 #include "accuracy_metrics.h"
+#include "box2d_validation.h"
 #include "convergence_report.h"
 #include "engine/scene/scene_loader.h"
+#include "engine_comparison.h"
 #include "pile_report.h"
 #include "render/app/gnuplot.h"
 
@@ -455,6 +457,35 @@ void piles_part(const std::vector<SceneFile>& scenes, const fs::path& out_dir,
   fmt::print(stderr, "wrote {}/piles.csv and piles.md\n", out_dir.string());
 }
 
+// The validation scenes in Box2D 2.4.1 (box2d_scene.h) and rugosim's presets on the same
+// closed forms: box2d.csv, box2d.md (Box2D's table, then the two engines compared).
+void box2d_part(const std::vector<SceneFile>& scenes, const fs::path& out_dir, int repeats) {
+  std::vector<std::pair<std::string, std::string>> validation;
+  std::vector<EngineRun> runs;
+  for (const SceneFile& f : scenes) {
+    if (!f.validation) continue;
+    validation.emplace_back(f.name, f.path);
+    for (const std::string& preset : accuracy_preset_names()) {
+      const Run run = run_scene(f.scene, f.path, *accuracy_preset(preset), repeats);
+      runs.push_back(
+          {"rugosim", preset, f.name, run.wall_s, *closed_form_error(f.name, f.scene, run)});
+    }
+  }
+  fmt::print(stderr, "Box2D on {} validation scenes\n", validation.size());
+  const std::vector<bench::Box2dClosedForm> box2d =
+      bench::run_box2d_validation(validation, repeats);
+  for (const bench::Box2dClosedForm& r : box2d) {
+    if (!r.error) continue;
+    // The engine has its own column: "box2d 60 Hz" is "60 Hz" of Box2D.
+    const std::string setting = r.setting.rfind("box2d ", 0) == 0 ? r.setting.substr(6) : r.setting;
+    runs.push_back({"Box2D", setting, r.scene, r.wall_s, *r.error});
+  }
+  bench::write_box2d_csv(out_dir / "box2d.csv", box2d);
+  bench::write_box2d_markdown(out_dir / "box2d.md", box2d);
+  append_engine_comparison(out_dir / "box2d.md", runs);
+  fmt::print(stderr, "wrote {}/box2d.csv and box2d.md\n", out_dir.string());
+}
+
 // A mistake on the command line (exit 2, as rugosim's own).
 struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -471,14 +502,15 @@ int run(int argc, char** argv) {
     if (arg == "-h" || arg == "--help") {
       fmt::print(
           "Usage: accuracy_study [OUT_DIR] [--repeats N] [--members M]\n"
-          "                      [--part all|settings|convergence|piles]\n"
+          "                      [--part all|settings|convergence|piles|box2d]\n"
           "Runs every built-in scene at every preset and along each accuracy knob and\n"
           "writes accuracy.csv, accuracy.md and pareto.png into OUT_DIR (default\n"
           "docs/accuracy of the source tree); runs each non-chaotic scene along the step\n"
           "and writes convergence.csv, convergence.md and convergence.png; runs the piles\n"
           "(figure12a, figure12b) as ensembles of M perturbed copies (16) per preset and\n"
           "at the finest settings and writes piles.csv and piles.md. N: timed runs per\n"
-          "setting, best kept (3). --part: only one of the three.\n");
+          "setting, best kept (3). Runs the validation scenes in Box2D 2.4.1 too and\n"
+          "writes box2d.csv and box2d.md (the engines compared). --part: only one.\n");
       return 0;
     }
     if (arg == "--repeats") {
@@ -497,8 +529,9 @@ int run(int argc, char** argv) {
       ++i;
     } else if (arg == "--part") {
       part = i + 1 < argc ? argv[i + 1] : "";
-      if (part != "all" && part != "settings" && part != "convergence" && part != "piles")
-        throw UsageError("--part expects all, settings, convergence or piles");
+      if (part != "all" && part != "settings" && part != "convergence" && part != "piles" &&
+          part != "box2d")
+        throw UsageError("--part expects all, settings, convergence, piles or box2d");
       ++i;
     } else if (!arg.empty() && arg[0] == '-') {
       throw UsageError("unknown option " + arg + " (see --help)");
@@ -534,6 +567,7 @@ int run(int argc, char** argv) {
   if (part == "all" || part == "settings") settings_part(scenes, out_dir, repeats);
   if (part == "all" || part == "convergence") convergence_part(scenes, out_dir, repeats);
   if (part == "all" || part == "piles") piles_part(scenes, out_dir, members);
+  if (part == "all" || part == "box2d") box2d_part(scenes, out_dir, repeats);
   return 0;
 }
 
