@@ -151,6 +151,31 @@ ClosedFormError bouncing_disk(const Run& run, const Scene& scene) {
   return {worst, "max over 3 bounces |h_k / h_{k−1} − ε²| / ε²", {{"bounce ratio", worst}}};
 }
 
+// Two free disks collide head-on (no gravity): momentum is kept and the closing speed reversed
+// by ε, so each one's velocity after the impact is known from the masses and the velocities
+// before (the World's masses, of the B-spline outlines). The parts: each disk's velocity along
+// the line of centres in the last frame, its error relative to the closing speed.
+ClosedFormError two_disks(const Run& run, const Scene& scene) {
+  const World& world = *run.world;
+  const std::size_t a = run.movers.at(0), b = run.movers.at(1);
+  const double ma = world.body(a).mass(), mb = world.body(b).mass();
+  const double epsilon =
+      std::max(scene.bodies[a].material.restitution, scene.bodies[b].material.restitution);
+  const Vec2 line = (run.frames.front()[1].position - run.frames.front()[0].position).normalized();
+  const double va = run.frames.front()[0].velocity.dot(line);
+  const double vb = run.frames.front()[1].velocity.dot(line);
+  const double momentum = ma * va + mb * vb;
+  const double closing = va - vb;
+  const double va_after = (momentum - mb * epsilon * closing) / (ma + mb);
+  const double vb_after = (momentum + ma * epsilon * closing) / (ma + mb);
+  const double ea = std::abs(run.frames.back()[0].velocity.dot(line) - va_after) / closing;
+  const double eb = std::abs(run.frames.back()[1].velocity.dot(line) - vb_after) / closing;
+  return {std::max(ea, eb),
+          "max over both disks |v after − (momentum ∓ m_other·ε·closing) / (m_a + m_b)| / closing "
+          "speed",
+          {{"first disk's velocity", ea}, {"second disk's velocity", eb}}};
+}
+
 // A block at v0 reaches a patch of friction μ and, with its weight spread evenly over its base,
 // its centre stops d = v0² / (2gμ) past the patch's start (the start taken from the floor's σ:
 // the leftmost point of a rough segment). The model is approximate: a decelerating block
@@ -218,6 +243,7 @@ std::optional<ClosedFormError> closed_form_error(const std::string& name, const 
   if (name == "validation_incline_below") return incline_below(run);
   if (name == "validation_bouncing_disk") return bouncing_disk(run, scene);
   if (name == "validation_rough_patch") return rough_patch(run);
+  if (name == "validation_two_disks") return two_disks(run, scene);
   return std::nullopt;
 }
 

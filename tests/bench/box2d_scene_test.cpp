@@ -70,7 +70,8 @@ TEST_P(Box2dMasses, MatchRugosimsBodiesWithinThePolygonApproximation) {
   options.circles = c.circles;
   options.length_scale = c.length_scale;
   const std::vector<Box2dMass> masses = box2d_masses(scene, path, options);
-  ASSERT_EQ(masses.size(), 1u);  // each validation scene has one movable body
+  // One movable body per validation scene, two in the collision of two disks.
+  ASSERT_EQ(masses.size(), std::string(c.scene) == "validation_two_disks" ? 2u : 1u);
   for (const Box2dMass& m : masses) {
     const RigidBody& body = world->body(m.body);
     const bool gon = !c.circles && scene.bodies[m.body].shape.kind == ShapeKind::kCircle;
@@ -90,7 +91,9 @@ INSTANTIATE_TEST_SUITE_P(Box2dValidationScenes, Box2dMasses,
                                          MassCase{"validation_bouncing_disk", true, 1.0},
                                          MassCase{"validation_bouncing_disk", false, 2.0},
                                          MassCase{"validation_rough_patch", true, 1.0},
-                                         MassCase{"validation_rough_patch", true, 2.5}),
+                                         MassCase{"validation_rough_patch", true, 2.5},
+                                         MassCase{"validation_two_disks", true, 1.0},
+                                         MassCase{"validation_two_disks", false, 1.0}),
                          [](const testing::TestParamInfo<MassCase>& param) {
                            return std::string(param.param.scene) +
                                   (param.param.circles ? "_circle" : "_32gon") + "_scale" +
@@ -251,14 +254,14 @@ namespace {
 // The report: every validation scene at every setting (the 32-gon only for the disks), each
 // quantity of its closed form finite, and both files written with a row per scene.
 TEST(Box2dValidation, RunsEverySceneAtEverySettingAndWritesTheTables) {
-  const std::vector<std::string> names = {"validation_sliding_disk", "validation_incline_above",
+  const std::vector<std::string> names = {"validation_sliding_disk",  "validation_incline_above",
                                           "validation_incline_below", "validation_bouncing_disk",
-                                          "validation_rough_patch"};
+                                          "validation_rough_patch",   "validation_two_disks"};
   std::vector<std::pair<std::string, std::string>> name_and_path;
   for (const std::string& name : names)
     name_and_path.emplace_back(name, scene_path(name));
   const std::vector<Box2dClosedForm> results = run_box2d_validation(name_and_path, 1);
-  EXPECT_EQ(results.size(), 3u * 2u + 2u * 3u);
+  EXPECT_EQ(results.size(), 3u * 2u + 3u * 3u);  // 3 scenes without a disk, 3 with
   for (const Box2dClosedForm& r : results) {
     EXPECT_TRUE(r.unsupported.empty()) << r.scene << ": " << r.unsupported;
     ASSERT_TRUE(r.error) << r.scene;
