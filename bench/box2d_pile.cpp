@@ -14,6 +14,7 @@
 #include <string>
 #include <utility>
 
+#include "box2d_units.h"
 #include "engine/core/types.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/geometry/periodic_bspline.h"
@@ -298,10 +299,6 @@ const Box2dPileOptions& checked(const Box2dPileOptions& options) {
   return options;
 }
 
-b2Vec2 to_box2d(const Vec2& v, double scale) {
-  return b2Vec2(static_cast<float>(scale * v.x()), static_cast<float>(scale * v.y()));
-}
-
 }  // namespace
 
 Box2dPile::Box2dPile(const std::vector<rugosim::testing::PileBody>& scene,
@@ -314,14 +311,7 @@ Box2dPile::Box2dPile(const std::vector<rugosim::testing::PileBody>& scene,
     // The rugosim body does the normalising and re-centring, so both engines place the same
     // outline about the same centre of mass.
     const RigidBody body(entry.desc);
-    const BodyState& state = body.state();
-
-    b2BodyDef body_def;
-    body_def.type = body.fixed() ? b2_staticBody : b2_dynamicBody;
-    body_def.position = to_box2d(state.position, scale);
-    body_def.angle = static_cast<float>(state.angle);
-    body_def.linearVelocity = to_box2d(state.velocity, scale);
-    body_def.angularVelocity = static_cast<float>(state.angular_velocity);
+    const b2BodyDef body_def = box2d_body_def(body, scale);
     b2Body* b2_body = world_->CreateBody(&body_def);
 
     std::size_t pieces_used = 0;

@@ -9,6 +9,7 @@
 
 #include <fmt/core.h>
 
+#include "box2d_units.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/geometry/shapes.h"
 
@@ -25,10 +26,6 @@ static_assert(kGonEdgesPerPiece + 2 <= b2_maxPolygonVertices);
 
 // Relative to the body's size: outline points closer than this are one point.
 constexpr double kSameTolerance = 1e-9;
-
-b2Vec2 to_box2d(const Vec2& v, double scale) {
-  return b2Vec2(static_cast<float>(scale * v.x()), static_cast<float>(scale * v.y()));
-}
 
 void check(const Box2dSceneOptions& options) {
   if (!(std::isfinite(options.hz) && options.hz > 0.0))
@@ -217,14 +214,7 @@ Box2dSceneWorld build_box2d_scene(const Scene& scene, const World& world,
   for (std::size_t i = 0; i < world.body_count(); ++i) {
     const RigidBody& body = world.body(i);
     const BodySpec& spec = scene.bodies[i];
-    const BodyState& state = body.state();
-    b2BodyDef def;
-    def.type = body.fixed() ? b2_staticBody : b2_dynamicBody;
-    // The Box2D body's origin is the centre of mass, as rugosim's body frame is.
-    def.position = to_box2d(state.position, scale);
-    def.angle = static_cast<float>(state.angle);
-    def.linearVelocity = to_box2d(state.velocity, scale);
-    def.angularVelocity = static_cast<float>(state.angular_velocity);
+    const b2BodyDef def = box2d_body_def(body, scale);
     b2Body* b2_body = out.world->CreateBody(&def);
     switch (spec.shape.kind) {
       case ShapeKind::kCircle:
