@@ -35,8 +35,9 @@ void append_engine_comparison(const std::filesystem::path& path,
          "Each engine's settings on the same closed forms: relative error (wall time of the run). "
          "★ marks the Pareto front: no other run, of either engine, is both faster and more "
          "accurate. The last column says which engine is more accurate at equal or lower wall "
-         "time: the engine of the front's most accurate run, and whether the other engine has "
-         "a run on the front at all.\n\n| scene | quantity |";
+         "time: the engine of the most accurate run on the front, from that run's wall time, "
+         "and the other engine below it where that one has runs on the front too.\n\n"
+         "| scene | quantity |";
   std::vector<std::pair<std::string, std::string>> settings;  // (engine, setting)
   for (const EngineRun& r : runs) {
     const std::pair<std::string, std::string> key(r.engine, r.setting);
