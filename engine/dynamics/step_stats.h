@@ -7,8 +7,10 @@
 namespace rugosim {
 
 struct StepStats {
-  std::uint64_t steps = 0;       // accepted states (steps, and sub-steps of backed-off islands)
-  std::uint64_t bisections = 0;  // trial states tried while backing off to first contact
+  std::uint64_t steps = 0;  // accepted states (steps, and sub-steps of backed-off islands)
+  // Trial states tried while backing off to first contact, an arriving pair's own placements
+  // (World::locate_arrivals) included.
+  std::uint64_t bisections = 0;
   std::uint64_t collisions = 0;  // impulses from plain collisions (events of kind collision)
   std::uint64_t contacts = 0;    // resting-contact micro-collisions (events of kind contact)
   // Every time a bounded loop ran out and a documented fallback was used (the sum of the
