@@ -9,17 +9,9 @@ find_package(fmt REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3.11 REQUIRED)
 
-# Renderer: off-screen GL (OSMesa, EGL), PNG, and FFmpeg for MP4 and GIF (libavfilter: the
-# GIF palette).
-pkg_check_modules(OSMESA REQUIRED IMPORTED_TARGET osmesa)
-pkg_check_modules(EGL REQUIRED IMPORTED_TARGET egl)
-pkg_check_modules(PNG REQUIRED IMPORTED_TARGET libpng)
-# Text in frames: FreeType (the font is fonts-dejavu-core's DejaVu Sans).
-pkg_check_modules(FREETYPE REQUIRED IMPORTED_TARGET freetype2)
-# Vector stills (SVG and PDF): cairo's surfaces, with the same FreeType face for text.
-pkg_check_modules(CAIRO REQUIRED IMPORTED_TARGET cairo cairo-svg cairo-pdf cairo-ft)
-pkg_check_modules(LIBAV REQUIRED IMPORTED_TARGET libavcodec libavformat libavfilter libavutil
-                  libswscale)
+# Renderer: off-screen GL, PNG, MP4, text and vector stills, by pkg-config (one file, which the
+# installed package config includes too).
+include("${CMAKE_CURRENT_LIST_DIR}/rugosimRenderDependencies.cmake")
 
 if(RUGOSIM_BUILD_TESTS)
   # The tests read animated WebP with libwebp's demux API (FFmpeg 5.1 cannot decode it).
