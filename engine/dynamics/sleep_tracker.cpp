@@ -137,4 +137,42 @@ std::uint64_t SleepTracker::update(std::span<RigidBody> bodies,
   return slept;
 }
 
+void SleepTracker::save(ByteWriter& out) const {
+  out.u64(asleep_.size());
+  for (std::size_t i = 0; i < asleep_.size(); ++i) {
+    out.u8(asleep_[i]);
+    out.u64(island_[i]);
+    out.f64(anchor_position_[i].x());
+    out.f64(anchor_position_[i].y());
+    out.f64(anchor_angle_[i]);
+    out.f64(anchor_time_[i]);
+    out.i64(still_windows_[i]);
+    out.f64(band_seen_[i]);
+  }
+  out.f64(next_check_);
+}
+
+void SleepTracker::restore(ByteReader& in, std::size_t bodies) {
+  if (in.u64() != bodies) throw ByteStreamError("sleep records for another number of bodies");
+  asleep_.assign(bodies, 0);
+  island_.assign(bodies, 0);
+  anchor_position_.assign(bodies, Vec2::Zero());
+  anchor_angle_.assign(bodies, 0.0);
+  anchor_time_.assign(bodies, 0.0);
+  still_windows_.assign(bodies, 0);
+  band_seen_.assign(bodies, 0.0);
+  for (std::size_t i = 0; i < bodies; ++i) {
+    asleep_[i] = in.u8();
+    island_[i] = in.u64();
+    if (island_[i] >= bodies) throw ByteStreamError("a sleeping island past the last body");
+    const double x = in.f64();
+    anchor_position_[i] = Vec2(x, in.f64());
+    anchor_angle_[i] = in.f64();
+    anchor_time_[i] = in.f64();
+    still_windows_[i] = static_cast<int>(in.i64());
+    band_seen_[i] = in.f64();
+  }
+  next_check_ = in.f64();
+}
+
 }  // namespace rugosim

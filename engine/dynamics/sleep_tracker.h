@@ -28,6 +28,7 @@
 
 #include "engine/collision/broad_phase.h"
 #include "engine/collision/contact.h"
+#include "engine/core/byte_stream.h"
 #include "engine/core/disjoint_sets.h"
 #include "engine/core/types.h"
 #include "engine/dynamics/rigid_body.h"
@@ -85,6 +86,12 @@ class SleepTracker {
   // `near_pairs` are the broad-phase pairs of the same state (CollisionPipeline::near_pairs).
   std::uint64_t update(std::span<RigidBody> bodies, std::span<const ContactManifold> manifolds,
                        std::span<const BodyPair> near_pairs, double time);
+
+  // Checkpoints (World::save_state): every per-body record and the next check, exactly; the
+  // scratch of update() is not state. restore throws ByteStreamError when the record does not
+  // hold `bodies` bodies.
+  void save(ByteWriter& out) const;
+  void restore(ByteReader& in, std::size_t bodies);
 
  private:
   void anchor(const RigidBody& body, std::size_t i, double time);

@@ -1,5 +1,7 @@
 #include "engine/dynamics/state_hash.h"
 
+#include <string_view>
+
 #include "engine/core/hash.h"
 #include "engine/dynamics/world.h"
 
@@ -17,6 +19,12 @@ std::uint64_t state_hash(const World& world) {
     hash.add(s.velocity.y());
     hash.add(s.angular_velocity);
   }
+  return hash.value();
+}
+
+std::uint64_t full_state_hash(const World& world) {
+  Fnv1a hash;
+  hash.add(std::string_view(world.save_state()));
   return hash.value();
 }
 

@@ -11,4 +11,9 @@ class World;
 
 std::uint64_t state_hash(const World& world);
 
+// The hash of everything a checkpoint holds (World::save_state): the bodies and time as above,
+// and all else that steers the next step (the last state's manifolds and near pairs, the sleep
+// records, the statistics). Two Worlds with equal full hashes continue identically.
+std::uint64_t full_state_hash(const World& world);
+
 }  // namespace rugosim

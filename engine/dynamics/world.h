@@ -55,6 +55,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/collision/collision_pipeline.h"
@@ -202,6 +203,16 @@ class World {
   // The crossings and contacts of the last accepted state (positions do not change while
   // impulses are applied, so these still describe the current state).
   const std::vector<ContactManifold>& manifolds() const { return manifolds_; }
+
+  // Checkpoints (world_state.cpp): everything that steers the steps after this moment, exactly
+  // (the bodies' states, time, the last state's manifolds and near pairs, the sleep records,
+  // the statistics and the first crossing), as bytes. Events are not included (the commands
+  // clear them every frame). restore_state takes a record saved by a World built from the same
+  // scene and settings; it throws ByteStreamError for one that is malformed or holds another
+  // number of bodies, leaving this World unchanged. Continuing after a restore gives, bit for
+  // bit, what the World that saved it would have given.
+  std::string save_state() const;
+  void restore_state(std::string_view record);
 
  private:
   // Makes `members` (sorted body indices) the bodies that move in the current (sub-)step.

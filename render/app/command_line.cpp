@@ -21,6 +21,7 @@ const NumberRange kDuration{0.0, true, std::numeric_limits<double>::infinity(), 
 // The bound of the scene key render.fps (INTERFACE.md).
 const NumberRange kRoughnessScale{0.0, false, 100.0, false, false, "display scale"};
 const NumberRange kFps{0.0, true, 1000.0, false, false, "frames per second"};
+const NumberRange kEvery{1.0, false, 1e9, false, true, "frames"};
 
 }  // namespace
 
@@ -64,9 +65,22 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
   c.simulate->add_option("--trajectory", c.sim.trajectory_path, "write trajectory.csv here");
   c.simulate->add_option("--events", c.sim.events_path, "write events.csv (one row per impulse)");
   c.simulate->add_option("--stats", c.sim.stats_path, "write stats.json (step statistics)");
+  CLI::Option* checkpoints = c.simulate->add_option(
+      "--checkpoints", c.sim.checkpoint_dir,
+      "write the exact state every --every frames into this folder (frame_NNNNNN.ckpt)");
+  c.simulate->add_option("--every", c.sim.every, "frames between checkpoints (default: 30)")
+      ->check(number_in(kEvery))
+      ->type_name("N")
+      ->needs(checkpoints);
+  c.simulate->add_option("--resume", c.sim.resume_path,
+                         "continue from this checkpoint (same scene file, settings and build); "
+                         "the telemetry holds the frames after it");
   c.simulate->footer(
       "Example: rugosim simulate scenes/figure12a.json --trajectory out/traj.csv "
       "--events out/events.csv --stats out/stats.json\n"
+      "         rugosim simulate scenes/pile_200.json --checkpoints out/ckpt --every 15\n"
+      "         rugosim simulate scenes/pile_200.json --resume out/ckpt/frame_000060.ckpt "
+      "--trajectory out/rest.csv\n"
       "Files are written atomically: on an error none is created or truncated; on Ctrl-C the "
       "frames simulated so far are written and the exit code is 130.");
 

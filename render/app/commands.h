@@ -27,10 +27,15 @@ struct SimulateOptions {
   std::string trajectory_path;  // empty: not written
   std::string events_path;
   std::string stats_path;
+  std::string checkpoint_dir;  // --checkpoints: empty for none
+  std::size_t every = 30;      // --every: frames between checkpoints
+  std::string resume_path;     // --resume: a checkpoint to continue from
 };
 
 // Simulates and writes the telemetry files atomically; exit 130 on SIGINT after writing what
-// was simulated so far.
+// was simulated so far. With checkpoint_dir, the World's exact state is written there at every
+// `every`-th frame (checkpoint_file.h); with resume_path, the run continues from such a
+// checkpoint, and its telemetry holds the frames after it.
 int run_simulate(const SimulateOptions& options);
 
 struct RenderOptions {

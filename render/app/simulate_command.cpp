@@ -1,13 +1,20 @@
 #include <cmath>
+#include <filesystem>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include <fmt/core.h>
 
+#include "engine/core/byte_stream.h"
+#include "engine/core/version.h"
+#include "engine/dynamics/state_hash.h"
 #include "engine/dynamics/telemetry.h"
 #include "engine/scene/scene_world.h"
 #include "render/app/atomic_file.h"
+#include "render/app/build_id.h"
+#include "render/app/checkpoint_file.h"
 #include "render/app/commands.h"
 #include "render/app/crossing_report.h"
 #include "render/app/progress.h"
@@ -42,6 +49,48 @@ class BufferedOutput {
   std::string text_;
 };
 
+// What a checkpoint of this run must match: program, scene file and the settings that shape the
+// steps (every accuracy knob after the overrides, and the frame rate; not the duration, so a
+// resumed run may go on further, nor the threads, which change nothing).
+Checkpoint this_run(const std::string& scene_path, const Accuracy& accuracy, double fps) {
+  Checkpoint c;
+  c.program_version = kVersion;
+  c.build = build_id();
+  c.scene_hash = file_hash(scene_path);
+  for (const AccuracyKnob& knob : accuracy_knobs())
+    c.settings += fmt::format("{}={};", knob.key, knob.get(accuracy));
+  c.settings += fmt::format("fps={}", fps);
+  return c;
+}
+
+// Restores the World from the checkpoint at `path`; returns its frame, or nullopt after
+// printing why it cannot be resumed here.
+std::optional<std::size_t> resume(World& world, const std::string& path, const Checkpoint& run,
+                                  std::size_t last) {
+  try {
+    const Checkpoint saved = read_checkpoint(path);
+    if (const std::string why = incompatibility(saved, run); !why.empty()) {
+      fmt::print(stderr, "error: {}: {}\n", path, why);
+      return std::nullopt;
+    }
+    if (saved.frame > last) {
+      fmt::print(stderr, "error: {}: frame {} is past the run's last frame, {}\n", path,
+                 saved.frame, last);
+      return std::nullopt;
+    }
+    world.restore_state(saved.world_state);
+    if (full_state_hash(world) != saved.state_hash) {
+      throw CheckpointError(path + ": corrupt (the restored state's hash differs from the saved)");
+    }
+    return static_cast<std::size_t>(saved.frame);
+  } catch (const CheckpointError& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+  } catch (const ByteStreamError& e) {
+    fmt::print(stderr, "error: {}: corrupt ({})\n", path, e.what());
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 int run_simulate(const SimulateOptions& o) {
@@ -58,8 +107,19 @@ int run_simulate(const SimulateOptions& o) {
     return kExitUsage;
   }
   const std::size_t last = run.last;
+  const Accuracy accuracy = scene_accuracy(loaded->scene);
 
   try {
+    const Checkpoint run_id = this_run(o.scene_path, accuracy, fps);
+    // A checkpoint is checked, and the World restored, before any output exists: a refused one
+    // leaves nothing written.
+    std::size_t first = 1;
+    if (!o.resume_path.empty()) {
+      const std::optional<std::size_t> from = resume(world, o.resume_path, run_id, last);
+      if (!from) return kExitUsage;
+      first = *from + 1;
+    }
+    if (!o.checkpoint_dir.empty()) std::filesystem::create_directories(o.checkpoint_dir);
     // Every output is created before the run, so a bad path fails at once.
     BufferedOutput trajectory(o.trajectory_path);
     BufferedOutput events(o.events_path);
@@ -67,7 +127,7 @@ int run_simulate(const SimulateOptions& o) {
         o.stats_path.empty() ? nullptr : std::make_unique<AtomicFile>(o.stats_path);
     if (std::string* t = trajectory.buffer()) {
       t->append(kTrajectoryCsvHeader);
-      append_trajectory_rows(*t, world, 0);
+      if (o.resume_path.empty()) append_trajectory_rows(*t, world, 0);
     }
     if (std::string* e = events.buffer()) e->append(kEventsCsvHeader);
 
@@ -75,7 +135,7 @@ int run_simulate(const SimulateOptions& o) {
     world.set_stop_flag(&SigintGuard::interrupted());
     CrossingWatch crossings;
     Progress progress(static_cast<double>(last) / fps, stderr);
-    std::size_t frame = 1;
+    std::size_t frame = first;
     for (; frame <= last && !sigint.interrupted(); ++frame) {
       world.advance_to(static_cast<double>(frame) / fps);
       crossings.check(world, stderr);
@@ -86,6 +146,16 @@ int run_simulate(const SimulateOptions& o) {
           append_event_row(*e, world, event);
       }
       world.clear_events();
+      if (!o.checkpoint_dir.empty() && frame % o.every == 0) {
+        Checkpoint c = run_id;
+        c.frame = frame;
+        c.time = world.time();
+        c.state_hash = full_state_hash(world);
+        c.world_state = world.save_state();
+        AtomicFile file(checkpoint_path(o.checkpoint_dir, frame));
+        file.write(encode_checkpoint(c));
+        file.commit();
+      }
       trajectory.flush_if_large();
       events.flush_if_large();
       progress.update(world.time());
@@ -95,7 +165,6 @@ int run_simulate(const SimulateOptions& o) {
     trajectory.commit();
     events.commit();
     if (stats_file) {
-      const Accuracy accuracy = scene_accuracy(loaded->scene);
       stats_file->write(stats_json(world.stats(), wall, &accuracy, &world));
       stats_file->commit();
     }
