@@ -22,6 +22,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libwebp-dev
   # the vector stills' tests: an XML parser and the SVG and PDF rasterisers they compare with
   libxml2-utils librsvg2-bin poppler-utils
+  # scale-out tests: chunked renders and sweeps run through GNU parallel (docs/scale-out.md)
+  parallel
   # packaging: cpack's .deb (dpkg-shlibdeps declares the program's libraries; file finds them)
   dpkg-dev file
   # the pile benchmark's competitor

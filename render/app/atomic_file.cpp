@@ -1,6 +1,7 @@
 #include "render/app/atomic_file.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <sys/stat.h>
@@ -59,6 +60,18 @@ void AtomicFile::commit() {
     std::remove(temporary_.c_str());
     throw error;
   }
+}
+
+RenamedFile::RenamedFile(std::string path)
+    : path_(std::move(path)), temporary_(path_ + ".partial-" + std::to_string(::getpid())) {}
+
+RenamedFile::~RenamedFile() {
+  if (!committed_) std::remove(temporary_.c_str());
+}
+
+void RenamedFile::commit() {
+  if (std::rename(temporary_.c_str(), path_.c_str()) != 0) throw io_error("rename", path_);
+  committed_ = true;
 }
 
 }  // namespace rugosim::app

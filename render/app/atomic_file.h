@@ -32,4 +32,24 @@ class AtomicFile {
   std::FILE* file_ = nullptr;
 };
 
+// A file that another writer (an encoder) fills under a temporary name beside `path`, renamed
+// to `path` on commit(); without commit (an error, an interruption) the temporary file is
+// removed. So a file at `path` is always complete.
+class RenamedFile {
+ public:
+  explicit RenamedFile(std::string path);
+  ~RenamedFile();
+  RenamedFile(const RenamedFile&) = delete;
+  RenamedFile& operator=(const RenamedFile&) = delete;
+
+  const std::string& temporary() const { return temporary_; }
+  // Renames the temporary file over `path`; throws std::runtime_error on failure.
+  void commit();
+
+ private:
+  std::string path_;
+  std::string temporary_;
+  bool committed_ = false;
+};
+
 }  // namespace rugosim::app

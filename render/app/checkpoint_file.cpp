@@ -8,6 +8,8 @@
 
 #include "engine/core/byte_stream.h"
 #include "engine/core/hash.h"
+#include "engine/core/version.h"
+#include "render/app/build_id.h"
 
 namespace rugosim::app {
 namespace {
@@ -35,6 +37,17 @@ std::uint64_t file_hash(const std::string& path) {
   return bytes_hash(read_bytes(path));
 }
 
+Checkpoint run_identity(const std::string& scene_path, const Accuracy& accuracy, double fps) {
+  Checkpoint c;
+  c.program_version = kVersion;
+  c.build = build_id();
+  c.scene_hash = file_hash(scene_path);
+  for (const AccuracyKnob& knob : accuracy_knobs())
+    c.settings += fmt::format("{}={};", knob.key, knob.get(accuracy));
+  c.settings += fmt::format("fps={}", fps);
+  return c;
+}
+
 std::string encode_checkpoint(const Checkpoint& c) {
   ByteWriter out;
   out.u64(kFormat);
@@ -44,6 +57,9 @@ std::string encode_checkpoint(const Checkpoint& c) {
   out.text(c.settings);
   out.u64(c.frame);
   out.f64(c.time);
+  out.u64(c.last_frame);
+  for (const double v : {c.bounds.min.x(), c.bounds.min.y(), c.bounds.max.x(), c.bounds.max.y()})
+    out.f64(v);
   out.u64(c.state_hash);
   out.text(c.world_state);
   std::string bytes = std::string(kMagic) + out.bytes();
@@ -74,6 +90,10 @@ Checkpoint decode_checkpoint(const std::string& bytes) {
     c.settings = in.text();
     c.frame = in.u64();
     c.time = in.f64();
+    c.last_frame = in.u64();
+    const double x0 = in.f64(), y0 = in.f64(), x1 = in.f64(), y1 = in.f64();
+    c.bounds.min = Vec2(x0, y0);
+    c.bounds.max = Vec2(x1, y1);
     c.state_hash = in.u64();
     c.world_state = in.text();
     if (!in.at_end()) throw CheckpointError("corrupt (bytes after its contents)");

@@ -8,6 +8,7 @@
 #include "engine/dynamics/frame_snapshot.h"
 #include "engine/scene/scene_loader.h"
 #include "render/app/render_scene.h"
+#include "render/draw/camera.h"
 
 namespace rugosim::app {
 namespace {
@@ -47,7 +48,8 @@ class ClipSource {
         plan_(plan),
         automatic_(!camera),
         follow_(follow),
-        interrupted_(interrupted) {
+        interrupted_(interrupted),
+        reached_(plan.start_reached) {
     // Every step polls the flag: a run crawling through short steps stops within one.
     world_.set_stop_flag(interrupted);
     if (camera) camera_.set_value(camera);
@@ -109,7 +111,7 @@ class ClipSource {
   std::promise<std::optional<Camera>> camera_;
   std::future<std::optional<Camera>> camera_future_ = camera_.get_future();
   std::size_t next_ = 0;
-  std::size_t reached_ = 0;  // the frame whose time the World is at
+  std::size_t reached_;  // the frame whose time the World is at
   bool simulated_ = false;
   std::vector<FrameSnapshot> clip_;
   std::size_t handed_ = 0;
@@ -151,6 +153,9 @@ ClipSource clip_source(LoadedScene& loaded, const ClipPlan& plan,
   const std::optional<std::size_t> follow =
       spec.follow.empty() ? std::nullopt : find_body(loaded.scene, spec.follow);
   if (follow) fixed_camera = follow_camera(world, *follow, spec.height, plan.width, plan.height);
+  // A chunk's automatic camera: the whole clip's framing, as fit_clip_camera finds it.
+  if (spec.automatic && plan.clip_bounds)
+    fixed_camera = fit_camera(*plan.clip_bounds, plan.width, plan.height);
   return ClipSource(world, plan, fixed_camera, follow, interrupted);
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/aabb.h"
 #include "render/app/scene_input.h"
 #include "render/draw/scene_renderer.h"
 #include "render/gl/gl_context.h"
@@ -27,6 +28,10 @@ struct ClipPlan {
   GlBackend backend = GlBackend::kOsmesa;
   AntiAliasing anti_aliasing = AntiAliasing::kShader;
   Overlays overlays;
+  // A chunk of a longer clip (render_chunk.h): the frame whose time the World is at (restored
+  // from a checkpoint), and with the automatic camera, every body's box over the whole clip.
+  std::size_t start_reached = 0;
+  std::optional<Aabb> clip_bounds;
 };
 
 // llvmpipe's rasteriser threads (LP_NUM_THREADS), read by Mesa when the first context starts:

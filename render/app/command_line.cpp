@@ -134,6 +134,15 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
   add_threads_option(*c.render, c.render_options.threads);
   c.render->add_flag("--strict", c.render_options.strict,
                      "exit 1 when the run had to accept a crossing state (for CI)");
+  CLI::Option* render_checkpoints = c.render->add_option(
+      "--checkpoints", c.render_options.checkpoint_dir,
+      "with --chunk: the folder of `simulate --checkpoints` for this scene and settings");
+  c.render
+      ->add_option("--chunk", c.render_options.chunk,
+                   "MP4: render chunk I of N (0-based; auto: from SLURM_ARRAY_TASK_ID, "
+                   "JOB_COMPLETION_INDEX or PARALLEL_SEQ) into OUT.chunkI.mp4, for `rugosim join`")
+      ->type_name("I/N")
+      ->needs(render_checkpoints);
   c.render->add_option("--crf", c.render_options.crf, "MP4: x264 constant rate factor 0..51")
       ->check(number_in({0, false, 51, false, true, ""}))
       ->type_name("N")
@@ -266,6 +275,20 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       "Exit 0 when every frame matches, 1 when one differs or is missing (NAME_FRAME.actual.png, "
       "NAME_FRAME.diff.png and NAME.summary.txt are written beside the goldens), 2 for bad "
       "usage, a bad scene or an unreadable golden.");
+
+  c.join = c.app.add_subcommand(
+      "join", "concatenate the chunks of render --chunk I/N into one MP4, without re-encoding");
+  c.join->add_option("OUT", c.join_options.output, "the clip: OUT.chunk0.mp4 ... are its chunks")
+      ->required();
+  c.join->add_option("--chunks", c.join_options.chunks, "how many chunks (N of --chunk I/N)")
+      ->check(number_in({1, false, 1e6, false, true, ""}))
+      ->type_name("N")
+      ->required();
+  c.join->add_flag("-y", c.join_options.overwrite, "overwrite OUT if it exists");
+  c.join->footer(
+      "Example: rugosim join out/figure12a.mp4 --chunks 4\n"
+      "The chunks must come from one scene, settings and build (render --chunk I/N with the same "
+      "options); OUT is a fragmented MP4 whose frames are the chunks' frames, written atomically.");
 
   c.plot = c.app.add_subcommand(
       "plot",

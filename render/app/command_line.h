@@ -22,6 +22,7 @@ struct CommandLine {
   CLI::App* render = nullptr;
   CLI::App* snapshot = nullptr;
   CLI::App* plot = nullptr;
+  CLI::App* join = nullptr;
 
   // What was given; complete only after finish_parse().
   std::string scene;  // validate and info
@@ -30,6 +31,7 @@ struct CommandLine {
   RenderOptions render_options;
   SnapshotOptions snap;
   PlotOptions plot_options;
+  JoinOptions join_options;
 
   // Raw values of options whose absence means "the scene's value" (see finish_parse).
   double duration = 0.0, fps = 0.0;

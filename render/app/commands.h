@@ -68,6 +68,8 @@ struct RenderOptions {
   std::string png_filter = "up";
   std::optional<int> gl_threads;  // llvmpipe rasteriser threads (LP_NUM_THREADS)
   int png_workers = 2;            // threads compressing a PNG sequence
+  std::string chunk;              // --chunk I/N or auto/N (render_chunk.h); empty: the whole clip
+  std::string checkpoint_dir;     // --checkpoints: where a chunk finds its checkpoints
 };
 
 // Renders a scene to a clip (MP4, GIF, WebM, MOV, WebP), a PNG sequence, a still or a strip. Exit 2
@@ -118,5 +120,16 @@ struct PlotOptions {
 // whichever of the two CSVs is given. Exit 2 for a bad or missing CSV or an unknown body (no
 // PNG is written), 1 when gnuplot is missing or fails.
 int run_plot(const PlotOptions& options);
+
+struct JoinOptions {
+  std::string output;      // OUT.mp4: the chunks are OUT.chunkI.mp4 (render_chunk.h)
+  std::size_t chunks = 0;  // N
+  bool overwrite = false;  // -y
+};
+
+// Concatenates the N chunks of `render --chunk I/N` into OUT without re-encoding (mp4_join.h),
+// atomically. Exit 2 for a missing chunk or chunks encoded with other settings (nothing
+// written), 1 for an I/O failure.
+int run_join(const JoinOptions& options);
 
 }  // namespace rugosim::app

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   if (c.render->parsed()) return run_render(c.render_options);
   if (c.snapshot->parsed()) return run_snapshot(c.snap);
   if (c.plot->parsed()) return run_plot(c.plot_options);
+  if (c.join->parsed()) return run_join(c.join_options);
   fmt::print("{}", c.app.help());
   return kExitOk;
 }

@@ -15,12 +15,16 @@
 #include <fmt/core.h>
 
 #include "engine/scene/scene_loader.h"
+#include "engine/scene/scene_world.h"
+#include "render/app/atomic_file.h"
+#include "render/app/checkpoint_file.h"
 #include "render/app/clip_render.h"
 #include "render/app/commands.h"
 #include "render/app/crossing_report.h"
 #include "render/app/frame_memory.h"
 #include "render/app/number_option.h"
 #include "render/app/progress.h"
+#include "render/app/render_chunk.h"
 #include "render/app/render_scene.h"
 #include "render/app/run_length.h"
 #include "render/app/scene_input.h"
@@ -368,7 +372,13 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
   plan.mp4.fps = plan.clip.fps;
   plan.mp4.crf = o.crf;
   plan.mp4.preset = o.preset;
-  if (plan.kind == OutputKind::kPngSequence) {
+  if (!o.chunk.empty()) {
+    // A chunk writes OUT.chunkI.mp4 (render_chunk.h), never OUT; a complete one is skipped.
+    if (plan.kind != OutputKind::kMp4)
+      throw UsageError("--chunk: expected an MP4 output (-o OUT.mp4)");
+    if (o.frame || !o.frames.empty() || o.strip > 0)
+      throw UsageError("--chunk splits the whole clip: not with --frame, --frames or --strip");
+  } else if (plan.kind == OutputKind::kPngSequence) {
     for (const std::size_t frame : plan.clip.frames) {
       refuse_to_overwrite(format_frame_path(o.output, frame), o.overwrite);
     }
@@ -379,6 +389,51 @@ Plan make_plan(const RenderOptions& o, const LoadedScene& loaded) {
 }
 
 }  // namespace
+
+// A chunk of the clip (render_chunk.h): narrows the plan to the chunk's frames, restores the World
+// from the latest checkpoint before them and frames the automatic camera from the clip's last
+// checkpoint. Sets `output` to the chunk's file. Returns an exit code when there is nothing to
+// render: 0 when the chunk is already complete, 2 after printing why it cannot be rendered.
+std::optional<int> prepare_chunk(const RenderOptions& o, LoadedScene& loaded, Plan& plan,
+                                 std::string& output) {
+  ChunkIndex chunk;
+  try {
+    chunk = parse_chunk(o.chunk);
+  } catch (const std::invalid_argument& e) {
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitUsage;
+  }
+  const std::size_t last = plan.clip.frames.back();
+  const auto [first, end] = chunk_frames(chunk, plan.clip.frames.size());
+  if (first == end) {
+    fmt::print(stderr, "error: --chunk {}: the clip has {} frames, fewer than {} chunks\n", o.chunk,
+               plan.clip.frames.size(), chunk.count);
+    return kExitUsage;
+  }
+  output = chunk_path(o.output, chunk.index);
+  if (std::filesystem::exists(output)) {
+    fmt::print(stderr, "done: chunk {} of {} ({}) is already complete\n", chunk.index, chunk.count,
+               output);
+    return kExitOk;
+  }
+  try {
+    const Checkpoint run = run_identity(o.scene_path, scene_accuracy(loaded.scene), plan.clip.fps);
+    const ChunkStart start = find_chunk_start(o.checkpoint_dir, run, first, last);
+    if (start.state) {
+      loaded.world->restore_state(start.state->world_state);
+      plan.clip.start_reached = start.state->frame;
+    }
+    plan.clip.clip_bounds = start.clip_bounds;
+  } catch (const std::runtime_error& e) {  // CheckpointError, ByteStreamError
+    fmt::print(stderr, "error: {}\n", e.what());
+    return kExitUsage;
+  }
+  plan.clip.frames.assign(plan.clip.frames.begin() + static_cast<std::ptrdiff_t>(first),
+                          plan.clip.frames.begin() + static_cast<std::ptrdiff_t>(end));
+  // Every chunk starts on an IDR frame (a new encoder) with the same headers: stitchable.
+  plan.mp4.stitchable = true;
+  return std::nullopt;
+}
 
 // Simulates to the still's frame and writes it as SVG or PDF (whole, or not at all).
 int write_vector(const RenderOptions& o, const Plan& plan, LoadedScene& loaded) {
@@ -409,12 +464,16 @@ int run_render(const RenderOptions& o) {
   std::optional<LoadedScene> loaded = load_scene_or_report(o.scene_path, o.accuracy, o.threads);
   if (!loaded) return kExitUsage;
   Plan plan;
+  std::string output = o.output;  // a chunk's own file (render --chunk)
   try {
     if (!o.camera.empty()) {
       loaded->scene.render.camera = camera_option(o.camera, loaded->scene);
     }
     if (o.roughness_scale) loaded->scene.render.roughness_scale = *o.roughness_scale;
     plan = make_plan(o, *loaded);
+    if (!o.chunk.empty()) {
+      if (const std::optional<int> code = prepare_chunk(o, *loaded, plan, output)) return *code;
+    }
   } catch (const UsageError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
     return kExitUsage;
@@ -423,11 +482,16 @@ int run_render(const RenderOptions& o) {
   keep_frame_memory();
   const SigintGuard sigint;
   try {
+    std::optional<RenamedFile> chunk_file;  // declared before the sink: removed after it closes
     std::unique_ptr<FrameSink> sink;
     std::vector<Image> kept;  // the frames of a still or a strip
     if (plan.kind == OutputKind::kMp4) {
       quiet_ffmpeg_logs();
-      sink = std::make_unique<Mp4Sink>(o.output, plan.clip.width, plan.clip.height, plan.mp4);
+      // A chunk is written under a temporary name and renamed when whole: a chunk file that
+      // exists is complete (a preempted task leaves none, and a rerun redoes it).
+      if (output != o.output) chunk_file.emplace(output);
+      sink = std::make_unique<Mp4Sink>(chunk_file ? chunk_file->temporary() : output,
+                                       plan.clip.width, plan.clip.height, plan.mp4);
     } else if (plan.kind == OutputKind::kClip) {
       quiet_ffmpeg_logs();
       sink = std::make_unique<EncodedClipSink>(o.output, plan.clip_format, plan.clip.width,
@@ -462,6 +526,7 @@ int run_render(const RenderOptions& o) {
         &SigintGuard::interrupted());
     progress.finish();
     if (sink) sink->close();
+    if (chunk_file && !result.interrupted) chunk_file->commit();
     if (plan.kind == OutputKind::kStrip && !result.interrupted) {
       Image strip =
           compose_film_grid(kept, plan.strip,
@@ -480,7 +545,7 @@ int run_render(const RenderOptions& o) {
     if (result.interrupted && writes_one_png(plan.kind)) where = "rendered, nothing written to";
     fmt::print(stderr, "{}: {} frame{} {} {} in {:.3g} s ({:.3g} frames/s)\n",
                result.interrupted ? "interrupted" : "done", result.frames,
-               result.frames == 1 ? "" : "s", where, o.output, progress.wall_seconds(),
+               result.frames == 1 ? "" : "s", where, output, progress.wall_seconds(),
                static_cast<double>(result.frames) / std::max(progress.wall_seconds(), 1e-9));
     return strict_exit_code(*loaded->world, o.strict,
                             result.interrupted ? kExitInterrupted : kExitOk, stderr);

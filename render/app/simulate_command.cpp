@@ -8,12 +8,10 @@
 #include <fmt/core.h>
 
 #include "engine/core/byte_stream.h"
-#include "engine/core/version.h"
 #include "engine/dynamics/state_hash.h"
 #include "engine/dynamics/telemetry.h"
 #include "engine/scene/scene_world.h"
 #include "render/app/atomic_file.h"
-#include "render/app/build_id.h"
 #include "render/app/checkpoint_file.h"
 #include "render/app/commands.h"
 #include "render/app/crossing_report.h"
@@ -49,26 +47,12 @@ class BufferedOutput {
   std::string text_;
 };
 
-// What a checkpoint of this run must match: program, scene file and the settings that shape the
-// steps (every accuracy knob after the overrides, and the frame rate; not the duration, so a
-// resumed run may go on further, nor the threads, which change nothing).
-Checkpoint this_run(const std::string& scene_path, const Accuracy& accuracy, double fps) {
-  Checkpoint c;
-  c.program_version = kVersion;
-  c.build = build_id();
-  c.scene_hash = file_hash(scene_path);
-  for (const AccuracyKnob& knob : accuracy_knobs())
-    c.settings += fmt::format("{}={};", knob.key, knob.get(accuracy));
-  c.settings += fmt::format("fps={}", fps);
-  return c;
-}
-
-// Restores the World from the checkpoint at `path`; returns its frame, or nullopt after
+// Restores the World from the checkpoint at `path`; returns it, or nullopt after
 // printing why it cannot be resumed here.
-std::optional<std::size_t> resume(World& world, const std::string& path, const Checkpoint& run,
-                                  std::size_t last) {
+std::optional<Checkpoint> resume(World& world, const std::string& path, const Checkpoint& run,
+                                 std::size_t last) {
   try {
-    const Checkpoint saved = read_checkpoint(path);
+    Checkpoint saved = read_checkpoint(path);
     if (const std::string why = incompatibility(saved, run); !why.empty()) {
       fmt::print(stderr, "error: {}: {}\n", path, why);
       return std::nullopt;
@@ -82,7 +66,7 @@ std::optional<std::size_t> resume(World& world, const std::string& path, const C
     if (full_state_hash(world) != saved.state_hash) {
       throw CheckpointError(path + ": corrupt (the restored state's hash differs from the saved)");
     }
-    return static_cast<std::size_t>(saved.frame);
+    return saved;
   } catch (const CheckpointError& e) {
     fmt::print(stderr, "error: {}\n", e.what());
   } catch (const ByteStreamError& e) {
@@ -110,16 +94,25 @@ int run_simulate(const SimulateOptions& o) {
   const Accuracy accuracy = scene_accuracy(loaded->scene);
 
   try {
-    const Checkpoint run_id = this_run(o.scene_path, accuracy, fps);
+    const Checkpoint run_id = run_identity(o.scene_path, accuracy, fps);
     // A checkpoint is checked, and the World restored, before any output exists: a refused one
     // leaves nothing written.
     std::size_t first = 1;
+    Aabb resumed_bounds;
     if (!o.resume_path.empty()) {
-      const std::optional<std::size_t> from = resume(world, o.resume_path, run_id, last);
+      const std::optional<Checkpoint> from = resume(world, o.resume_path, run_id, last);
       if (!from) return kExitUsage;
-      first = *from + 1;
+      first = from->frame + 1;
+      resumed_bounds = from->bounds;
     }
     if (!o.checkpoint_dir.empty()) std::filesystem::create_directories(o.checkpoint_dir);
+    // The automatic camera's framing (fit_clip_camera): every body's box over the frames so far.
+    Aabb bounds = first == 1 ? Aabb{} : resumed_bounds;
+    const auto frame_bounds = [&] {
+      for (std::size_t i = 0; i < world.body_count(); ++i)
+        bounds.extend(world.body(i).shape().world_bounds(world.body(i).placement()));
+    };
+    if (first == 1) frame_bounds();
     // Every output is created before the run, so a bad path fails at once.
     BufferedOutput trajectory(o.trajectory_path);
     BufferedOutput events(o.events_path);
@@ -146,10 +139,14 @@ int run_simulate(const SimulateOptions& o) {
           append_event_row(*e, world, event);
       }
       world.clear_events();
-      if (!o.checkpoint_dir.empty() && frame % o.every == 0) {
+      frame_bounds();
+      // At every `every`-th frame, and at the last: its box frames the whole clip.
+      if (!o.checkpoint_dir.empty() && (frame % o.every == 0 || frame == last)) {
         Checkpoint c = run_id;
         c.frame = frame;
         c.time = world.time();
+        c.last_frame = last;
+        c.bounds = bounds;
         c.state_hash = full_state_hash(world);
         c.world_state = world.save_state();
         AtomicFile file(checkpoint_path(o.checkpoint_dir, frame));

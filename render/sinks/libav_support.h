@@ -16,6 +16,12 @@ extern "C" {
 
 namespace rugosim {
 
+// The MP4 muxer's flags of every MP4 we write (Mp4Sink, join_mp4): one fragment per keyframe,
+// the moov written up front with no samples (so the file is playable before the trailer
+// exists), and fragment offsets relative to their own moof (what browsers and the ISO BMFF
+// readers expect).
+inline constexpr const char* kFragmentedMovFlags = "frag_keyframe+empty_moov+default_base_moof";
+
 // FFmpeg's words for an error code ("No space left on device"), or "error N".
 std::string av_error_text(int code);
 

@@ -31,11 +31,6 @@ constexpr std::array<std::string_view, 10> kPresets{"ultrafast", "superfast", "v
                                                     "fast",      "medium",    "slow",     "slower",
                                                     "veryslow",  "placebo"};
 
-// One fragment per keyframe, the moov written up front with no samples (so the file is
-// playable before the trailer exists), and fragment offsets relative to their own moof (what
-// browsers and the ISO BMFF readers expect).
-constexpr const char* kMovFlags = "frag_keyframe+empty_moov+default_base_moof";
-
 }  // namespace
 
 void quiet_ffmpeg_logs() {
@@ -163,6 +158,10 @@ Mp4Sink::Mp4Sink(std::string path, int width, int height, const Mp4Options& opti
   }
   e.check(av_opt_set(c->priv_data, "preset", options.preset.c_str(), 0), "setting the x264 preset");
   e.check(av_opt_set_double(c->priv_data, "crf", options.crf, 0), "setting the x264 crf");
+  if (options.stitchable) {
+    e.check(av_opt_set(c->priv_data, "x264-params", "stitchable=1", 0),
+            "setting x264's stitchable");
+  }
   e.check(avcodec_open2(c, codec, nullptr), "opening the libx264 encoder");
 
   e.stream->time_base = c->time_base;  // a hint: the muxer picks its own in write_header
@@ -197,7 +196,8 @@ Mp4Sink::Mp4Sink(std::string path, int width, int height, const Mp4Options& opti
                      nullptr, nullptr),
           "opening for writing");
   Dictionary muxer_options;
-  e.check(av_dict_set(muxer_options.address(), "movflags", kMovFlags, 0), "setting the MP4 flags");
+  e.check(av_dict_set(muxer_options.address(), "movflags", kFragmentedMovFlags, 0),
+          "setting the MP4 flags");
   e.check(avformat_write_header(format, muxer_options.address()), "writing the MP4 header");
   if (muxer_options.count() != 0) e.fail("the MP4 muxer ignored the fragmentation flags");
   // The header is small and would sit in the AVIO buffer; pushing it now makes a full disk or

@@ -25,6 +25,9 @@ struct Mp4Options {
   std::string preset = "medium";  // an x264 preset (mp4_preset_is_valid)
   int keyframe_interval = 0;      // frames, >= 0; 0 = one keyframe per second, round(fps)
   int threads = 0;                // x264 threads, >= 0; 0 = x264 chooses from the core count
+  // x264's stitchable: the stream's headers do not depend on its frames, so that clips encoded
+  // apart with the same settings can be concatenated into one stream (render --chunk, join).
+  bool stitchable = false;
 };
 
 // Sets FFmpeg's process-wide log level to errors only (libx264 otherwise prints its settings and

@@ -1,0 +1,110 @@
+#include "render/app/render_chunk.h"
+
+#include <charconv>
+#include <cstdlib>
+#include <filesystem>
+
+#include <fmt/core.h>
+
+namespace rugosim::app {
+namespace {
+
+std::optional<std::size_t> whole_number(std::string_view text) {
+  std::size_t value = 0;
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (text.empty() || error != std::errc() || end != text.data() + text.size()) return std::nullopt;
+  return value;
+}
+
+// The task index of the engine running this process, 0-based.
+std::size_t index_from_environment() {
+  struct Source {
+    const char* variable;
+    std::size_t base;
+  };
+  for (const Source& s : {Source{"SLURM_ARRAY_TASK_ID", 0}, Source{"JOB_COMPLETION_INDEX", 0},
+                          Source{"PARALLEL_SEQ", 1}}) {
+    const char* value = std::getenv(s.variable);
+    if (value == nullptr) continue;
+    const std::optional<std::size_t> n = whole_number(value);
+    if (!n || *n < s.base) {
+      throw std::invalid_argument(
+          fmt::format("--chunk auto: {}=\"{}\" is not a task index (expected a whole number >= {})",
+                      s.variable, value, s.base));
+    }
+    return *n - s.base;
+  }
+  throw std::invalid_argument(
+      "--chunk auto: none of SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX and PARALLEL_SEQ is set "
+      "(run it as a Slurm array task, a Kubernetes Indexed Job or under GNU parallel, or give "
+      "I/N)");
+}
+
+}  // namespace
+
+ChunkIndex parse_chunk(const std::string& text) {
+  const std::size_t slash = text.find('/');
+  const std::optional<std::size_t> count =
+      slash == std::string::npos ? std::nullopt : whole_number(text.substr(slash + 1));
+  const std::string index_text = slash == std::string::npos ? text : text.substr(0, slash);
+  const std::optional<std::size_t> index =
+      index_text == "auto" ? std::optional<std::size_t>(0) : whole_number(index_text);
+  if (!count || !index || *count == 0) {
+    throw std::invalid_argument(
+        fmt::format("--chunk: expected I/N or auto/N (0 <= I < N), got \"{}\"", text));
+  }
+  ChunkIndex chunk{index_text == "auto" ? index_from_environment() : *index, *count};
+  if (chunk.index >= chunk.count) {
+    throw std::invalid_argument(
+        fmt::format("--chunk {}: the index must be below {} (0-based)", text, chunk.count));
+  }
+  return chunk;
+}
+
+std::pair<std::size_t, std::size_t> chunk_frames(const ChunkIndex& chunk, std::size_t frames) {
+  return {chunk.index * frames / chunk.count, (chunk.index + 1) * frames / chunk.count};
+}
+
+std::string chunk_path(const std::string& output, std::size_t index) {
+  std::filesystem::path path(output);
+  const std::string stem =
+      path.extension() == ".mp4" ? path.stem().string() : path.filename().string();
+  return (path.parent_path() / fmt::format("{}.chunk{}.mp4", stem, index)).string();
+}
+
+ChunkStart find_chunk_start(const std::string& dir, const Checkpoint& run, std::size_t first,
+                            std::size_t last) {
+  const auto usable = [&](std::size_t frame) -> std::optional<Checkpoint> {
+    const std::string path = checkpoint_path(dir, frame);
+    if (!std::filesystem::exists(path)) return std::nullopt;
+    Checkpoint c = read_checkpoint(path);
+    if (const std::string why = incompatibility(c, run); !why.empty())
+      throw CheckpointError(fmt::format("{}: {}", path, why));
+    if (c.frame != frame || c.last_frame != last) {
+      throw CheckpointError(fmt::format(
+          "{}: written at frame {} of a clip of {} frames, not at frame {} of this clip of {}",
+          path, c.frame, c.last_frame + 1, frame, last + 1));
+    }
+    return c;
+  };
+  ChunkStart start;
+  const std::optional<Checkpoint> end = usable(last);
+  if (!end) {
+    throw CheckpointError(fmt::format(
+        "{}: no checkpoint at the clip's last frame ({}): run the checkpoint pass first "
+        "(rugosim simulate SCENE --checkpoints {} with the same settings)",
+        checkpoint_path(dir, last), last, dir));
+  }
+  start.clip_bounds = end->bounds;
+  // The chunk's first frame must be simulated (its events and contacts are those since the frame
+  // before), so the state is taken from a checkpoint strictly before it.
+  for (std::size_t frame = first; frame-- > 1;) {
+    if (std::optional<Checkpoint> c = usable(frame)) {
+      start.state = std::move(c);
+      break;
+    }
+  }
+  return start;
+}
+
+}  // namespace rugosim::app
