@@ -22,8 +22,9 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libwebp-dev
   # the vector stills' tests: an XML parser and the SVG and PDF rasterisers they compare with
   libxml2-utils librsvg2-bin poppler-utils
-  # scale-out tests: chunked renders and sweeps run through GNU parallel (docs/scale-out.md)
-  parallel
+  # scale-out tests: chunked renders through GNU parallel and a single-node Slurm cluster that
+  # the tests start themselves (docs/scale-out.md)
+  parallel slurm-wlm slurm-client munge
   # packaging: cpack's .deb (dpkg-shlibdeps declares the program's libraries; file finds them)
   dpkg-dev file
   # the pile benchmark's competitor
@@ -55,6 +56,17 @@ if [ "$(id -u)" -ne 0 ]; then
   sudo_cmd=(sudo)
 fi
 export DEBIAN_FRONTEND=noninteractive
+# munge and Slurm are for the tests only, which start their own daemons on loopback and stop
+# them: their packages would start munged and the Slurm daemons as system services. A
+# policy-rc.d that refuses every service start (invoke-rc.d and deb-systemd-invoke honour it)
+# keeps them stopped while apt installs; one the system already has is left alone.
+policy=/usr/sbin/policy-rc.d
+if [ ! -e "$policy" ]; then
+  printf '#!/bin/sh\n# cmake/install-deps.sh: no service starts while it installs\nexit 101\n' |
+    "${sudo_cmd[@]}" tee "$policy" >/dev/null
+  "${sudo_cmd[@]}" chmod 755 "$policy"
+  trap '"${sudo_cmd[@]}" rm -f "$policy"' EXIT
+fi
 "${sudo_cmd[@]}" apt-get update -qq
 "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 echo "install-deps: done."

@@ -290,6 +290,41 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       "The chunks must come from one scene, settings and build (render --chunk I/N with the same "
       "options); OUT is a fragmented MP4 whose frames are the chunks' frames, written atomically.");
 
+  c.plan = c.app.add_subcommand(
+      "plan", "print the commands and scheduler recipes of a job that runs on many machines");
+  c.plan->require_subcommand(1);
+  c.plan_render = c.plan->add_subcommand(
+      "render", "a chunked render: the checkpoint pass, one render per chunk, the join");
+  PlanOptions& p = c.plan_options;
+  c.plan_render->add_option("SCENE", p.scene_path, "scene file (JSON)")->required();
+  c.plan_render->add_option("-o,--output", p.output, "the clip, OUT.mp4")->required();
+  c.plan_render->add_option("--chunks", p.chunks, "how many chunks")
+      ->check(number_in({1, false, 1e6, false, true, ""}))
+      ->type_name("N")
+      ->required();
+  c.plan_render->add_option("--every", p.every, "frames between checkpoints (default: 30)")
+      ->check(number_in(kEvery))
+      ->type_name("N");
+  c.plan_render->add_option("--checkpoints", p.checkpoint_dir,
+                            "the checkpoint folder (default: OUT.mp4.checkpoints)");
+  c.plan_render->add_option("--fps", c.fps, "frames per second (default: render.fps)")
+      ->check(number_in(kFps))
+      ->type_name("FPS");
+  c.plan_render->add_option("--size", p.size, "frame size of the chunks (default: render.size)")
+      ->type_name("WxH");
+  c.plan_render->add_option("--crf", c.plan_crf, "x264 constant rate factor 0..51")
+      ->check(number_in({0, false, 51, false, true, ""}))
+      ->type_name("N");
+  add_accuracy_options(*c.plan_render, p.accuracy);
+  c.plan_render->add_option("--program", p.program,
+                            "how the tasks call rugosim (default: rugosim, on PATH)");
+  c.plan_render->add_option("--jobs", p.jobs, "GNU parallel's -j (default: 2)")
+      ->check(number_in({1, false, 4096, false, true, ""}))
+      ->type_name("N");
+  c.plan_render->footer(
+      "Example: rugosim plan render scenes/figure12a.json -o out/figure12a.mp4 --chunks 4\n"
+      "Prints; runs nothing. docs/scale-out.md explains each step.");
+
   c.plot = c.app.add_subcommand(
       "plot",
       "draw friction per collision event and velocity over time as PNG, SVG or PDF (gnuplot)");
@@ -335,6 +370,8 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
 void finish_parse(CommandLine& c) {
   if (c.simulate->count("--duration") > 0) c.sim.duration = c.duration;
   if (c.simulate->count("--fps") > 0) c.sim.fps = c.fps;
+  if (c.plan_render->count("--fps") > 0) c.plan_options.fps = c.fps;
+  if (c.plan_render->count("--crf") > 0) c.plan_options.crf = c.plan_crf;
   if (c.render->count("--fps") > 0) c.render_options.fps = c.render_fps;
   if (c.render->count("--roughness-scale") > 0) {
     c.render_options.roughness_scale = c.render_roughness_scale;

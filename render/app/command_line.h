@@ -23,6 +23,8 @@ struct CommandLine {
   CLI::App* snapshot = nullptr;
   CLI::App* plot = nullptr;
   CLI::App* join = nullptr;
+  CLI::App* plan = nullptr;
+  CLI::App* plan_render = nullptr;
 
   // What was given; complete only after finish_parse().
   std::string scene;  // validate and info
@@ -32,6 +34,9 @@ struct CommandLine {
   SnapshotOptions snap;
   PlotOptions plot_options;
   JoinOptions join_options;
+  PlanOptions plan_options;
+  std::optional<double> plan_fps;  // set into plan_options by finish_parse
+  int plan_crf = 18;
 
   // Raw values of options whose absence means "the scene's value" (see finish_parse).
   double duration = 0.0, fps = 0.0;

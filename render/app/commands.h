@@ -121,6 +121,23 @@ struct PlotOptions {
 // PNG is written), 1 when gnuplot is missing or fails.
 int run_plot(const PlotOptions& options);
 
+struct PlanOptions {
+  std::string scene_path;
+  std::string output;          // OUT.mp4 of the render
+  std::size_t chunks = 0;      // N
+  std::size_t every = 30;      // frames between checkpoints
+  std::string checkpoint_dir;  // empty: OUT.mp4.checkpoints
+  AccuracyOverride accuracy;   // passed to the pass and the chunks alike
+  std::optional<double> fps;
+  std::string size;  // --size WxH of the chunks; empty: render.size
+  std::optional<int> crf;
+  std::string program = "rugosim";  // how the tasks call the program
+  int jobs = 2;                     // GNU parallel's -j
+};
+
+// Prints the commands and recipes of a chunked render (plan_command.cpp); runs nothing.
+int run_plan_render(const PlanOptions& options);
+
 struct JoinOptions {
   std::string output;      // OUT.mp4: the chunks are OUT.chunkI.mp4 (render_chunk.h)
   std::size_t chunks = 0;  // N

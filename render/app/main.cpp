@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   if (c.snapshot->parsed()) return run_snapshot(c.snap);
   if (c.plot->parsed()) return run_plot(c.plot_options);
   if (c.join->parsed()) return run_join(c.join_options);
+  if (c.plan_render->parsed()) return run_plan_render(c.plan_options);
   fmt::print("{}", c.app.help());
   return kExitOk;
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A render split into chunks by GNU parallel and joined (docs/scale-out.md), against the single
 # render of the same clip: figure12a at 1280x720, 4 chunks on `parallel -j2` with
-# `--chunk auto/4` (PARALLEL_SEQ), after one checkpoint pass.
+# `--chunk auto/4` (PARALLEL_SEQ), after one checkpoint pass — run as `rugosim plan render`
+# prints it (its GNU parallel recipe, executed as printed, in a folder whose name has a space).
 #   --crf 0 (lossless): the joined clip's decoded frames equal the single render's (framemd5).
 #   default CRF: PSNR of the joined clip against the single render >= 45 dB on every frame, and
 #   the joined clip plays as one clip of the single render's duration and frame count.
@@ -10,20 +11,22 @@
 set -euo pipefail
 program=$(realpath "$1") source=$2 work=$3
 scene="$source/scenes/figure12a.json"
-rm -rf "$work" && mkdir -p "$work" && cd "$work"
+rm -rf "$work" && mkdir -p "$work/job dir" && cd "$work/job dir"
 fail() { echo "chunk_render_parallel: $*" >&2; exit 1; }
 command -v parallel >/dev/null || fail "GNU parallel is not installed (cmake/install-deps.sh)"
 parallel --version | grep -q "GNU parallel" || fail "'parallel' is not GNU parallel"
 
-"$program" simulate "$scene" --checkpoints ck --every 15 2>/dev/null
 frames() { ffmpeg -v error -i "$1" -f framemd5 - | grep -v '^#' | awk -F, '{print $6}'; }
 for crf in 0 18; do
   "$program" render "$scene" -o "single$crf.mp4" --size 1280x720 --crf "$crf" 2>/dev/null
-  seq 4 | parallel --will-cite -j2 -N0 "$program" render "$scene" -o "clip$crf.mp4" --size 1280x720 \
-    --crf "$crf" --chunk auto/4 --checkpoints ck 2>"parallel$crf.log" ||
-    { cat "parallel$crf.log"; fail "a chunk failed (crf $crf)"; }
+  "$program" plan render "$scene" -o "$PWD/clip$crf.mp4" --chunks 4 --every 15 --size 1280x720 \
+    --crf "$crf" --checkpoints "$PWD/ck$crf" --program "$program" >"plan$crf.txt"
+  # The recipe: from its heading to the blank line after it, run as printed.
+  awk '/^# GNU parallel/ { on = 1; next } on && /^$/ { exit } on' "plan$crf.txt" >"recipe$crf.sh"
+  grep -q "parallel -j2 -N0 -q" "recipe$crf.sh" || fail "plan printed no GNU parallel recipe"
+  PARALLEL="--will-cite" bash "recipe$crf.sh" 2>"parallel$crf.log" ||
+    { cat "recipe$crf.sh" "parallel$crf.log"; fail "the plan's GNU parallel recipe failed (crf $crf)"; }
   for i in 0 1 2 3; do [ -f "clip$crf.chunk$i.mp4" ] || fail "chunk $i missing (crf $crf)"; done
-  "$program" join "clip$crf.mp4" --chunks 4 2>>"parallel$crf.log"
   single_duration=$(ffprobe -v error -show_entries format=duration -of csv=p=0 "single$crf.mp4")
   joined_duration=$(ffprobe -v error -show_entries format=duration -of csv=p=0 "clip$crf.mp4")
   [ "$single_duration" = "$joined_duration" ] ||
@@ -46,7 +49,7 @@ awk -v w="$worst" 'BEGIN { exit !(w == "inf" || w >= 45) }' ||
 # Resubmitting the same job: every chunk is complete and skipped, nothing is rewritten.
 before=$(stat -c %Y clip18.chunk2.mp4)
 seq 4 | parallel --will-cite -j2 -N0 "$program" render "$scene" -o clip18.mp4 --size 1280x720 \
-  --chunk auto/4 --checkpoints ck 2>rerun.log
+  --crf 18 --chunk auto/4 --checkpoints ck18 2>rerun.log
 grep -c "already complete" rerun.log | grep -q '^4$' || { cat rerun.log; fail "a rerun redid a chunk"; }
 [ "$(stat -c %Y clip18.chunk2.mp4)" = "$before" ] || fail "a complete chunk was rewritten"
 rm clip18.chunk3.mp4

@@ -63,6 +63,8 @@ std::vector<NumericOption> table() {
   // 3.4e6 s is past the clock of the normal preset and, at 30 fps, past 10^8 frames.
   rows.push_back({"simulate", "--duration", {}, "3.4e6"});
   rows.push_back({"simulate", "--fps", {}, "1e309"});
+  rows.push_back({"simulate", "--every", {}, kPast64Bits});
+  rows.push_back({"join", "--chunks", {}, kPast64Bits});
   rows.push_back({"render", "--duration", {}, "3.4e6"});
   rows.push_back({"render", "--fps", {}, "1e309"});
   rows.push_back({"render", "--roughness-scale", {"0", "1e-300"}, "1e309"});
@@ -86,6 +88,9 @@ class NumberOptions : public ::testing::Test {
   // 64x64 frames), so that a legitimate value finishes at once.
   std::string command_line(const NumericOption& o, const std::string& value) const {
     const std::string scene = (source_dir() / "scenes" / "validation_bouncing_disk.json").string();
+    if (o.command == "join") {
+      return program() + " join " + output().string() + " " + o.name + " '" + value + "'";
+    }
     std::string line = program() + " " + o.command + " " + scene;
     const bool sets_duration = o.name == "--duration";
     if (o.command == "simulate") {
