@@ -34,6 +34,7 @@ set_target_properties(rugosim_engine PROPERTIES EXPORT_NAME engine)
 set_target_properties(rugosim_render PROPERTIES EXPORT_NAME render)
 install(TARGETS rugosim_engine rugosim_render EXPORT rugosimTargets
         ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT dev
+        LIBRARY DESTINATION "${CMAKE_INSTALL_LIBDIR}" COMPONENT dev
         INCLUDES DESTINATION "${RUGOSIM_INSTALL_INCLUDEDIR}")
 install(EXPORT rugosimTargets NAMESPACE rugosim:: DESTINATION "${RUGOSIM_INSTALL_CMAKEDIR}"
         COMPONENT dev)

@@ -1,5 +1,5 @@
-# Writes OUTPUT (a C++ source) with the git commit the program is built from, "-dirty" when the
-# work tree differs from it, or "unknown" outside a git checkout. Run at every build (a custom
+# Writes OUTPUT (a C++ source) with the git commit the program is built from, "-dirty-<hash of
+# the diff>" when the work tree differs from it, or "unknown" outside a git checkout. Run at every build (a custom
 # target) and rewritten only when the id changes, so an unchanged id recompiles nothing.
 # Checkpoints record it: a checkpoint of another build is refused (render/app/checkpoint_file.h).
 execute_process(COMMAND git -C "${SOURCE_DIR}" rev-parse HEAD
@@ -8,10 +8,13 @@ execute_process(COMMAND git -C "${SOURCE_DIR}" rev-parse HEAD
 if(failed OR id STREQUAL "")
   set(id "unknown")
 else()
-  execute_process(COMMAND git -C "${SOURCE_DIR}" diff --quiet HEAD RESULT_VARIABLE dirty
-                  ERROR_QUIET)
-  if(dirty)
-    string(APPEND id "-dirty")
+  # A dirty tree: the id names the changes too (a hash of the diff), so that two builds of
+  # different uncommitted code never share an id.
+  execute_process(COMMAND git -C "${SOURCE_DIR}" diff HEAD OUTPUT_VARIABLE changes ERROR_QUIET)
+  if(NOT changes STREQUAL "")
+    string(SHA1 changes_hash "${changes}")
+    string(SUBSTRING "${changes_hash}" 0 12 changes_hash)
+    string(APPEND id "-dirty-${changes_hash}")
   endif()
 endif()
 file(WRITE "${OUTPUT}.new"

@@ -14,7 +14,7 @@
 namespace rugosim {
 namespace {
 
-constexpr std::uint64_t kStateFormat = 1;
+constexpr std::uint64_t kStateFormat = 2;  // 2: the fallbacks in a row
 
 void write_vec(ByteWriter& out, const Vec2& v) {
   out.f64(v.x());
@@ -62,23 +62,31 @@ std::size_t read_body(ByteReader& in, std::size_t bodies) {
   return static_cast<std::size_t>(i);
 }
 
-std::vector<ContactManifold> read_manifolds(ByteReader& in, std::size_t bodies) {
+// A segment of `body`: an index past its last segment would be read out of bounds later.
+std::size_t read_segment(ByteReader& in, const RigidBody& body) {
+  const std::uint64_t s = in.u64();
+  if (s >= body.shape().curve().size()) throw ByteStreamError("a segment past the body's last");
+  return static_cast<std::size_t>(s);
+}
+
+std::vector<ContactManifold> read_manifolds(ByteReader& in, const std::vector<RigidBody>& b) {
+  const std::size_t bodies = b.size();
   std::vector<ContactManifold> manifolds(in.count(32));
   for (ContactManifold& m : manifolds) {
     m.body_a = read_body(in, bodies);
     m.body_b = read_body(in, bodies);
     m.intersections.resize(in.count(48));
     for (Intersection& x : m.intersections) {
-      x.segment_a = in.u64();
-      x.segment_b = in.u64();
+      x.segment_a = read_segment(in, b[m.body_a]);
+      x.segment_b = read_segment(in, b[m.body_b]);
       x.t_a = in.f64();
       x.t_b = in.f64();
       x.point = read_vec(in);
     }
     m.contacts.resize(in.count(120));
     for (Contact& c : m.contacts) {
-      c.segment_a = in.u64();
-      c.segment_b = in.u64();
+      c.segment_a = read_segment(in, b[m.body_a]);
+      c.segment_b = read_segment(in, b[m.body_b]);
       c.t_a = in.f64();
       c.t_b = in.f64();
       c.lambda_a = in.f64();
@@ -156,6 +164,8 @@ std::string World::save_state() const {
     out.u64(first_crossing_->body_b);
     out.f64(first_crossing_->depth);
   }
+  // Min-step fallbacks in a row carry across frames: the crossing fallback counts them.
+  out.i64(consecutive_fallbacks_);
   return out.bytes();
 }
 
@@ -173,7 +183,7 @@ void World::restore_state(std::string_view record) {
     s.angular_velocity = in.f64();
   }
   const bool contacts_known = in.u8() != 0;
-  std::vector<ContactManifold> manifolds = read_manifolds(in, n);
+  std::vector<ContactManifold> manifolds = read_manifolds(in, bodies_);
   std::vector<BodyPair> near_pairs(in.count(16));
   for (BodyPair& p : near_pairs) {
     p.a = static_cast<std::uint32_t>(read_body(in, n));
@@ -193,6 +203,7 @@ void World::restore_state(std::string_view record) {
     r.depth = in.f64();
     first_crossing = r;
   }
+  const std::int64_t fallbacks_in_a_row = in.i64();
   if (!in.at_end()) throw ByteStreamError("bytes after the state");
 
   // All read: only now is the World changed, so a refused record leaves it as it was.
@@ -206,7 +217,7 @@ void World::restore_state(std::string_view record) {
   stats_ = stats;
   first_crossing_ = first_crossing;
   events_.clear();
-  consecutive_fallbacks_ = 0;
+  consecutive_fallbacks_ = static_cast<int>(fallbacks_in_a_row);
 }
 
 }  // namespace rugosim

@@ -72,6 +72,25 @@ std::string chunk_path(const std::string& output, std::size_t index) {
   return (path.parent_path() / fmt::format("{}.chunk{}.mp4", stem, index)).string();
 }
 
+std::string chunk_tag(const ChunkIndex& chunk, std::uint64_t render) {
+  return fmt::format("rugosim chunk {}/{} {:016x}", chunk.index, chunk.count, render);
+}
+
+std::optional<ChunkTag> parse_chunk_tag(const std::string& comment) {
+  constexpr std::string_view kPrefix = "rugosim chunk ";
+  if (comment.rfind(kPrefix, 0) != 0) return std::nullopt;
+  const std::string rest = comment.substr(kPrefix.size());
+  const std::size_t slash = rest.find('/');
+  const std::size_t space = rest.find(' ');
+  if (slash == std::string::npos || space == std::string::npos || space < slash)
+    return std::nullopt;
+  const std::optional<std::size_t> index = whole_number(std::string_view(rest).substr(0, slash));
+  const std::optional<std::size_t> count =
+      whole_number(std::string_view(rest).substr(slash + 1, space - slash - 1));
+  if (!index || !count) return std::nullopt;
+  return ChunkTag{{*index, *count}, rest.substr(space + 1)};
+}
+
 ChunkStart find_chunk_start(const std::string& dir, const Checkpoint& run, std::size_t first,
                             std::size_t last) {
   const auto usable = [&](std::size_t frame) -> std::optional<Checkpoint> {

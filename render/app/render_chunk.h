@@ -35,6 +35,17 @@ std::pair<std::size_t, std::size_t> chunk_frames(const ChunkIndex& chunk, std::s
 // "out/clip.mp4" → "out/clip.chunk2.mp4".
 std::string chunk_path(const std::string& output, std::size_t index);
 
+// The tag each chunk's MP4 carries as its comment: "rugosim chunk I/N <render>", where <render>
+// (16 hex digits) hashes the checkpoints' run identity and every option that shapes the frames,
+// so that a rerun skips only a chunk of the same render and join refuses chunks of others.
+std::string chunk_tag(const ChunkIndex& chunk, std::uint64_t render);
+struct ChunkTag {
+  ChunkIndex chunk;
+  std::string render;
+};
+// nullopt for a comment that is not a chunk tag.
+std::optional<ChunkTag> parse_chunk_tag(const std::string& comment);
+
 struct ChunkStart {
   std::optional<Checkpoint> state;  // the latest before `first`; none: start from the scene
   Aabb clip_bounds;                 // every body's box over the whole clip

@@ -14,6 +14,8 @@
 
 #include <fmt/core.h>
 
+#include "engine/core/hash.h"
+#include "engine/dynamics/state_hash.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/scene/scene_world.h"
 #include "render/app/atomic_file.h"
@@ -33,6 +35,7 @@
 #include "render/gl/gl_context.h"
 #include "render/sinks/encoded_clip_sink.h"
 #include "render/sinks/film_strip.h"
+#include "render/sinks/mp4_join.h"
 #include "render/sinks/mp4_sink.h"
 #include "render/sinks/png_io.h"
 #include "render/sinks/png_sequence_sink.h"
@@ -411,16 +414,45 @@ std::optional<int> prepare_chunk(const RenderOptions& o, LoadedScene& loaded, Pl
     return kExitUsage;
   }
   output = chunk_path(o.output, chunk.index);
-  if (std::filesystem::exists(output)) {
-    fmt::print(stderr, "done: chunk {} of {} ({}) is already complete\n", chunk.index, chunk.count,
-               output);
-    return kExitOk;
-  }
   try {
     const Checkpoint run = run_identity(o.scene_path, scene_accuracy(loaded.scene), plan.clip.fps);
+    // Which render this is: a complete chunk of the same one is skipped, another is not reused.
+    Fnv1a render;
+    for (const std::string& part :
+         {run.program_version, run.build, run.settings,
+          fmt::format("scene={:016x} frames={} size={}x{} crf={} preset={} backend={} aa={} "
+                      "camera={} roughness={} overlays={}{}{}",
+                      run.scene_hash, plan.clip.frames.size(), plan.clip.width, plan.clip.height,
+                      o.crf, o.preset, o.backend, o.anti_aliasing, o.camera,
+                      o.roughness_scale.value_or(-1.0), plan.clip.overlays.rugosity,
+                      plan.clip.overlays.contacts, plan.clip.overlays.velocity)})
+      render.add(std::string_view(part));
+    plan.mp4.comment = chunk_tag(chunk, render.value());
+    std::error_code missing;
+    if (std::filesystem::exists(output, missing) && !o.overwrite) {
+      std::string found;
+      try {
+        found = mp4_comment(output);
+      } catch (const SinkError&) {
+      }
+      if (found == plan.mp4.comment) {
+        fmt::print(stderr, "done: chunk {} of {} ({}) is already complete\n", chunk.index,
+                   chunk.count, output);
+        return kExitOk;
+      }
+      fmt::print(stderr,
+                 "error: {} exists but is not chunk {} of {} of this render (another scene, "
+                 "settings, options or build made it); add -y to render it again\n",
+                 output, chunk.index, chunk.count);
+      return kExitUsage;
+    }
     const ChunkStart start = find_chunk_start(o.checkpoint_dir, run, first, last);
     if (start.state) {
       loaded.world->restore_state(start.state->world_state);
+      if (full_state_hash(*loaded.world) != start.state->state_hash) {
+        throw CheckpointError(fmt::format("{}: corrupt (the restored state's hash differs)",
+                                          checkpoint_path(o.checkpoint_dir, start.state->frame)));
+      }
       plan.clip.start_reached = start.state->frame;
     }
     plan.clip.clip_bounds = start.clip_bounds;

@@ -105,7 +105,6 @@ int run_simulate(const SimulateOptions& o) {
       first = from->frame + 1;
       resumed_bounds = from->bounds;
     }
-    if (!o.checkpoint_dir.empty()) std::filesystem::create_directories(o.checkpoint_dir);
     // The automatic camera's framing (fit_clip_camera): every body's box over the frames so far.
     Aabb bounds = first == 1 ? Aabb{} : resumed_bounds;
     const auto frame_bounds = [&] {
@@ -113,6 +112,21 @@ int run_simulate(const SimulateOptions& o) {
         bounds.extend(world.body(i).shape().world_bounds(world.body(i).placement()));
     };
     if (first == 1) frame_bounds();
+    const auto write_checkpoint = [&](std::size_t frame) {
+      if (o.checkpoint_dir.empty()) return;
+      // Made with the first checkpoint, after every output opened: a bad path leaves nothing.
+      std::filesystem::create_directories(o.checkpoint_dir);
+      Checkpoint c = run_id;
+      c.frame = frame;
+      c.time = world.time();
+      c.last_frame = last;
+      c.bounds = bounds;
+      c.state_hash = full_state_hash(world);
+      c.world_state = world.save_state();
+      AtomicFile file(checkpoint_path(o.checkpoint_dir, frame));
+      file.write(encode_checkpoint(c));
+      file.commit();
+    };
     // Every output is created before the run, so a bad path fails at once.
     BufferedOutput trajectory(o.trajectory_path);
     BufferedOutput events(o.events_path);
@@ -124,6 +138,8 @@ int run_simulate(const SimulateOptions& o) {
     }
     if (std::string* e = events.buffer()) e->append(kEventsCsvHeader);
 
+    // A clip of one frame has its last checkpoint at frame 0.
+    if (last == 0 && first == 1) write_checkpoint(0);
     const SigintGuard sigint;
     world.set_stop_flag(&SigintGuard::interrupted());
     CrossingWatch crossings;
@@ -141,18 +157,7 @@ int run_simulate(const SimulateOptions& o) {
       world.clear_events();
       frame_bounds();
       // At every `every`-th frame, and at the last: its box frames the whole clip.
-      if (!o.checkpoint_dir.empty() && (frame % o.every == 0 || frame == last)) {
-        Checkpoint c = run_id;
-        c.frame = frame;
-        c.time = world.time();
-        c.last_frame = last;
-        c.bounds = bounds;
-        c.state_hash = full_state_hash(world);
-        c.world_state = world.save_state();
-        AtomicFile file(checkpoint_path(o.checkpoint_dir, frame));
-        file.write(encode_checkpoint(c));
-        file.commit();
-      }
+      if (frame % o.every == 0 || frame == last) write_checkpoint(frame);
       trajectory.flush_if_large();
       events.flush_if_large();
       progress.update(world.time());

@@ -52,6 +52,12 @@ bool same_stream(const AVCodecParameters& a, const AVCodecParameters& b) {
 
 }  // namespace
 
+std::string mp4_comment(const std::string& path) {
+  const OpenedInput in = open_input(path);
+  const AVDictionaryEntry* entry = av_dict_get(in.format->metadata, "comment", nullptr, 0);
+  return entry != nullptr ? std::string(entry->value) : std::string();
+}
+
 JoinedClip join_mp4(const std::vector<std::string>& inputs, const std::string& output) {
   const LibavErrors out_errors{output};
   if (inputs.empty()) out_errors.fail("no clips to join");

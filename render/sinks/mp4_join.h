@@ -17,6 +17,10 @@ struct JoinedClip {
   double seconds = 0.0;  // the joined stream's duration
 };
 
+// The "comment" metadata of the MP4 at `path` (Mp4Options::comment); empty when it has none.
+// Throws SinkError naming the file when it cannot be read as a clip.
+std::string mp4_comment(const std::string& path);
+
 // Writes `output` from `inputs` (in order). Throws SinkError naming the input or the output:
 // an input that cannot be read or holds no H.264 video stream, an input whose size, codec or
 // stream headers differ from the first's (encoded with other settings: the names of both), or

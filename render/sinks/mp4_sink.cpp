@@ -198,6 +198,10 @@ Mp4Sink::Mp4Sink(std::string path, int width, int height, const Mp4Options& opti
   Dictionary muxer_options;
   e.check(av_dict_set(muxer_options.address(), "movflags", kFragmentedMovFlags, 0),
           "setting the MP4 flags");
+  if (!options.comment.empty()) {
+    e.check(av_dict_set(&format->metadata, "comment", options.comment.c_str(), 0),
+            "setting the MP4 comment");
+  }
   e.check(avformat_write_header(format, muxer_options.address()), "writing the MP4 header");
   if (muxer_options.count() != 0) e.fail("the MP4 muxer ignored the fragmentation flags");
   // The header is small and would sit in the AVIO buffer; pushing it now makes a full disk or

@@ -28,6 +28,9 @@ struct Mp4Options {
   // x264's stitchable: the stream's headers do not depend on its frames, so that clips encoded
   // apart with the same settings can be concatenated into one stream (render --chunk, join).
   bool stitchable = false;
+  // Written as the file's "comment" metadata when not empty (render --chunk: which render a
+  // chunk belongs to; mp4_comment reads it back).
+  std::string comment{};
 };
 
 // Sets FFmpeg's process-wide log level to errors only (libx264 otherwise prints its settings and

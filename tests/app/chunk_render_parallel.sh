@@ -55,4 +55,15 @@ grep -c "already complete" rerun.log | grep -q '^4$' || { cat rerun.log; fail "a
 rm clip18.chunk3.mp4
 if "$program" join clip18.mp4 --chunks 4 -y 2>join.log; then fail "join accepted a missing chunk"; fi
 grep -q "chunk 3 of 4 is missing" join.log || { cat join.log; fail "join did not name the missing chunk"; }
+# A chunk file of another render (here another CRF) is neither skipped nor overwritten without -y,
+# and join refuses chunks of two renders.
+if "$program" render "$scene" -o clip18.mp4 --size 1280x720 --crf 20 --chunk 2/4 \
+  --checkpoints ck18 2>stale.log; then fail "a chunk of another render was reused"; fi
+grep -q "is not chunk 2 of 4 of this render" stale.log || { cat stale.log; fail "no reason given"; }
+for i in 0 1 2 3; do cp "clip0.chunk$i.mp4" "mixed.chunk$i.mp4"; done
+cp clip18.chunk2.mp4 mixed.chunk2.mp4
+if "$program" join mixed.mp4 --chunks 4 2>mixed.log; then fail "join mixed two renders"; fi
+grep -q "mixed.chunk2.mp4: not chunk 2 of 4 of the same render" mixed.log ||
+  { cat mixed.log; fail "join did not name the foreign chunk"; }
+[ ! -e mixed.mp4 ] || fail "a refused join wrote its output"
 echo "chunk_render_parallel: ok"

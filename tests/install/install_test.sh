@@ -17,7 +17,8 @@ find_package)
   source=$4
   cmake --install "$build" --prefix "$work/prefix" >"$work/install.log"
   [ -x "$work/prefix/bin/rugosim" ] || fail "no bin/rugosim in the prefix"
-  [ -f "$work/prefix/lib/cmake/rugosim/rugosimConfig.cmake" ] || fail "no package config"
+  config=$(find "$work/prefix" -name rugosimConfig.cmake -path "*/cmake/rugosim/*" | head -n 1)
+  [ -n "$config" ] || fail "no package config (lib*/cmake/rugosim/rugosimConfig.cmake)"
   cmake -S "$source/tests/install/example" -B "$work/example" -G Ninja \
         -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$work/prefix" >"$work/configure.log" ||
     { cat "$work/configure.log"; fail "the example does not configure against the package"; }
@@ -33,8 +34,8 @@ find_package)
 deb)
   cpack --config "$build/CPackConfig.cmake" -G DEB -B "$work" >"$work/cpack.log" ||
     { cat "$work/cpack.log"; fail "cpack failed"; }
-  program=$(ls "$work"/rugosim_"$version"_*.deb) || fail "no rugosim_$version_*.deb"
-  dev=$(ls "$work"/rugosim-dev_"$version"_*.deb) || fail "no rugosim-dev_$version_*.deb"
+  program=$(ls "$work"/rugosim_"$version"_*.deb) || fail "no rugosim_${version}_*.deb"
+  dev=$(ls "$work"/rugosim-dev_"$version"_*.deb) || fail "no rugosim-dev_${version}_*.deb"
   depends=$(dpkg-deb -f "$program" Depends)
   echo "rugosim Depends: $depends"
   for needed in libosmesa6 libavcodec59 libcairo2 libpng16-16 fonts-dejavu-core; do
