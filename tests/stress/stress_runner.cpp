@@ -139,7 +139,8 @@ void check_resume(const std::string& p, const fs::path& file, const std::string&
   json part = json::parse(read_text(dir / "resumed.json"));
   whole.erase("wall_time");
   part.erase("wall_time");
-  if (whole != part) failures->push_back("the resumed run's stats.json differs from the whole run's");
+  if (whole != part)
+    failures->push_back("the resumed run's stats.json differs from the whole run's");
 }
 
 Outcome run_scene(const Options& o, const json& scene, const std::string& label,
