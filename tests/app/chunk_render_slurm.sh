@@ -12,7 +12,7 @@ rm -rf "$work" && mkdir -p "$work" && cd "$work"
 fail() { echo "chunk_render_slurm: $*" >&2; exit 1; }
 # shellcheck source=../support/slurm_cluster.sh
 source "$source/tests/support/slurm_cluster.sh"
-slurm_start "$work/cluster"
+slurm_start
 
 # The job as `rugosim plan render` prints it: its Slurm recipe (the pass, the array after it, the
 # join after the array), submitted as printed.
@@ -43,7 +43,8 @@ cmp -s single.md5 clip.md5 || fail "the joined frames differ from the single ren
 echo "crf 0: 151 decoded frames equal (framemd5)"
 
 # The array resubmitted as it is (a preempted job's rerun): every chunk is complete, skipped.
-render="$program render $scene -o $work/clip.mp4 --size 1280x720 --crf 0 --checkpoints $work/ck"
+render="$(printf %q "$program") render $(printf %q "$scene") -o $(printf %q "$work/clip.mp4")"
+render+=" --size 1280x720 --crf 0 --checkpoints $(printf %q "$work/ck")"
 again=$(sbatch --parsable --chdir="$work" --output=again_%a.log --array=0-3 --wrap "$render --chunk auto/4")
 slurm_wait "$again"
 [ "$(slurm_state "$again")" = "COMPLETED" ] || fail "the resubmitted array failed"

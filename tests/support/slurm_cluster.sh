@@ -1,7 +1,10 @@
 # A real single-node Slurm cluster for the scale-out tests, started without systemd on loopback
 # and stopped again (facts: ../shared/notes/slurm-single-node.md). Source it, then:
-#   slurm_start DIR    munged, slurmctld and slurmd with their key, socket, config, state and logs
-#                      in DIR; exports SLURM_CONF; waits until the node is idle; stops them all
+#   slurm_start        munged, slurmctld and slurmd with their key, socket, config, state and logs
+#                      in a folder of their own under /tmp (munged wants execute permission for
+#                      all on every folder of its socket's path, which a build folder inside a
+#                      private one lacks, and slurm.conf cannot hold a path with spaces),
+#                      removed when they stop; exports SLURM_CONF; waits until the node is idle; stops them all
 #                      on the shell's exit (a trap), whatever happens. Fails, saying why, when a
 #                      daemon cannot start: a test that needs the cluster never passes without it.
 #   slurm_wait ID...   polls squeue until those jobs have left the queue (limit: 600 s)
@@ -11,23 +14,24 @@
 slurm_fail() { echo "slurm_cluster: $*" >&2; [ -n "${SLURM_DIR:-}" ] && tail -n 20 "$SLURM_DIR"/*.log >&2; exit 1; }
 
 slurm_start() {
-  SLURM_DIR=$(realpath "$1")
+  SLURM_DIR=$(mktemp -d /tmp/rugosim-slurm.XXXXXX)
   local d=$SLURM_DIR
   for tool in munged mungekey slurmctld slurmd sbatch squeue sinfo scontrol; do
     command -v "$tool" >/dev/null || slurm_fail "$tool is not installed (cmake/install-deps.sh: slurm-wlm, munge)"
   done
-  rm -rf "$d" && mkdir -p "$d/key" "$d/run" "$d/state" "$d/spool"
+  mkdir -p "$d/key" "$d/run" "$d/state" "$d/spool"
   chmod 755 "$d" "$d/run"
   chmod 700 "$d/key"
   SLURM_PIDS=()
   trap slurm_stop EXIT
   mungekey -c -k "$d/key/munge.key" >/dev/null 2>&1 || slurm_fail "mungekey could not make a key"
-  munged -F --socket="$d/run/munge.socket" --key-file="$d/key/munge.key" \
+  local socket=$d/run/munge.socket
+  munged -F --socket="$socket" --key-file="$d/key/munge.key" \
     --pid-file="$d/run/munged.pid" --log-file="$d/munged.log" --seed-file="$d/run/munge.seed" \
     >>"$d/munged.out" 2>&1 &
   SLURM_PIDS+=($!)
-  for _ in $(seq 100); do [ -S "$d/run/munge.socket" ] && break; sleep 0.1; done
-  [ -S "$d/run/munge.socket" ] || slurm_fail "munged did not start"
+  for _ in $(seq 100); do [ -S "$socket" ] && break; sleep 0.1; done
+  [ -S "$socket" ] || slurm_fail "munged did not start ($(tail -n 1 "$d/munged.out" 2>/dev/null))"
 
   # Ports of our own (the defaults, 6817 and 6818, may be in use).
   local port=$((20000 + ($$ % 20000)))
@@ -44,7 +48,7 @@ SlurmUser=$(id -un)
 SlurmdUser=$(id -un)
 AuthType=auth/munge
 CredType=cred/munge
-AuthInfo=socket=$d/run/munge.socket
+AuthInfo=socket=$socket
 MpiDefault=none
 ProctrackType=proctrack/linuxproc
 TaskPlugin=task/none
@@ -96,4 +100,6 @@ slurm_stop() {
     wait "${SLURM_PIDS[i]}" 2>/dev/null || true
   done
   SLURM_PIDS=()
+  if [ -n "${SLURM_DIR:-}" ]; then rm -rf "$SLURM_DIR"; fi
+  SLURM_DIR=
 }
