@@ -94,7 +94,12 @@ int run_simulate(const SimulateOptions& o) {
   const Accuracy accuracy = scene_accuracy(loaded->scene);
 
   try {
-    const Checkpoint run_id = run_identity(o.scene_path, accuracy, fps);
+    // The run's identity (the scene file read again and hashed) and the framing box are only
+    // for checkpoints: a plain run pays for neither.
+    const bool checkpoints = !o.checkpoint_dir.empty();
+    const Checkpoint run_id = checkpoints || !o.resume_path.empty()
+                                  ? run_identity(o.scene_path, accuracy, fps)
+                                  : Checkpoint{};
     // A checkpoint is checked, and the World restored, before any output exists: a refused one
     // leaves nothing written.
     std::size_t first = 1;
@@ -108,12 +113,13 @@ int run_simulate(const SimulateOptions& o) {
     // The automatic camera's framing (fit_clip_camera): every body's box over the frames so far.
     Aabb bounds = first == 1 ? Aabb{} : resumed_bounds;
     const auto frame_bounds = [&] {
+      if (!checkpoints) return;
       for (std::size_t i = 0; i < world.body_count(); ++i)
         bounds.extend(world.body(i).shape().world_bounds(world.body(i).placement()));
     };
     if (first == 1) frame_bounds();
     const auto write_checkpoint = [&](std::size_t frame) {
-      if (o.checkpoint_dir.empty()) return;
+      if (!checkpoints) return;
       // Made with the first checkpoint, after every output opened: a bad path leaves nothing.
       std::filesystem::create_directories(o.checkpoint_dir);
       Checkpoint c = run_id;
