@@ -8,6 +8,8 @@ find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(fmt REQUIRED)
 find_package(CLI11 REQUIRED)
 find_package(nlohmann_json 3.11 REQUIRED)
+# Sweeps: the arithmetic expressions of a sweep spec (render/app/sweep_expression.h).
+pkg_check_modules(MUPARSER REQUIRED IMPORTED_TARGET muparser)
 
 # Renderer: off-screen GL, PNG, MP4, text and vector stills, by pkg-config (one file, which the
 # installed package config includes too).

@@ -11,6 +11,8 @@ packages=(
   libeigen3-dev
   # application: CLI, formatting, scene files
   libcli11-dev libfmt-dev nlohmann-json3-dev
+  # sweeps: arithmetic expressions of a sweep spec
+  libmuparser-dev
   # renderer: off-screen OpenGL, PNG, MP4 (H.264 through libx264)
   libosmesa6-dev libegl-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri libpng-dev
   libavcodec-dev libavformat-dev libavfilter-dev libavutil-dev libswscale-dev

@@ -1,5 +1,6 @@
 // Reading scene JSON with errors that name the JSON path and say what was expected
-// (scene_loader.h): the helpers every part of the loader shares. Internal to engine/scene.
+// (scene_loader.h): the helpers every part of the loader shares, and the sweep specs
+// (render/app/sweep_spec.h), which follow the same conventions.
 #pragma once
 
 #include <algorithm>
@@ -7,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -32,6 +34,11 @@ std::string child(const std::string& path, std::size_t index);
 std::string printable(const std::string& text);
 // Levenshtein distance.
 std::size_t edit_distance(std::string_view a, std::string_view b);
+
+// JSON text with // and /* */ comments parsed; nullopt after adding the syntax error to `errors`
+// (`file`, the line and column, what the parser expected).
+std::optional<nlohmann::json> parse_json_text(std::string_view text, const std::string& file,
+                                              std::vector<SceneError>& errors);
 
 // Checks values against what the format expects, and records every problem as a SceneError
 // with the file, the JSON path and the expectation.

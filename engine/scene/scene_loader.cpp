@@ -414,20 +414,6 @@ void read_world(Reader& r, const json& v, const std::string& path, Scene& scene)
   }
 }
 
-// 1-based line and column of byte `offset` in `text`.
-std::pair<int, int> line_column(std::string_view text, std::size_t offset) {
-  int line = 1, column = 1;
-  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return {line, column};
-}
-
 }  // namespace
 
 std::optional<std::size_t> find_body(const Scene& scene, const std::string& name) {
@@ -466,35 +452,9 @@ std::string closest_match(std::string_view word, const std::vector<std::string>&
 SceneLoad parse_scene(std::string_view text, const std::string& file) {
   SceneLoad load;
   Reader r(file, load.errors);
-  json root;
-  try {
-    root = json::parse(text.begin(), text.end(), nullptr, /*allow_exceptions=*/true,
-                       /*ignore_comments=*/true);
-  } catch (const json::parse_error& e) {
-    // e.what() reads "[json.exception.parse_error.101] parse error at line L, column C: ...";
-    // keep what follows the position, which says what was expected.
-    std::string what = e.what();
-    const std::size_t colon = what.find(": ", what.find("parse error"));
-    const std::string reason = colon == std::string::npos ? what : what.substr(colon + 2);
-    const auto [line, column] = line_column(text, e.byte == 0 ? 0 : e.byte - 1);
-    load.errors.push_back({file, "", "invalid JSON: " + printable(reason), line, column});
-    return load;
-  } catch (const json::exception& e) {
-    // E.g. "number overflow parsing '1e999'": no position from the parser, so find the
-    // quoted text in the file.
-    std::string what = e.what();
-    const std::size_t bracket = what.find("] ");
-    const std::string reason = bracket == std::string::npos ? what : what.substr(bracket + 2);
-    int line = 1, column = 1;
-    const std::size_t open = reason.find('\'');
-    const std::size_t close = reason.rfind('\'');
-    if (open != std::string::npos && close > open) {
-      const std::size_t at = text.find(reason.substr(open + 1, close - open - 1));
-      if (at != std::string_view::npos) std::tie(line, column) = line_column(text, at);
-    }
-    load.errors.push_back({file, "", "invalid JSON: " + reason, line, column});
-    return load;
-  }
+  const std::optional<json> parsed = parse_json_text(text, file, load.errors);
+  if (!parsed) return load;
+  const json& root = *parsed;
   Scene& scene = load.scene;
   if (!r.is_object(root, "")) return load;
   r.check_keys(root, "", {"version", "name", "world", "materials", "bodies", "render"});

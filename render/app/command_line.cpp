@@ -325,6 +325,38 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
       "Example: rugosim plan render scenes/figure12a.json -o out/figure12a.mp4 --chunks 4\n"
       "Prints; runs nothing. docs/scale-out.md explains each step.");
 
+  c.sweep = c.app.add_subcommand(
+      "sweep", "run a parameter sweep: one task per point of its axes, on any task engine");
+  SweepOptions& w = c.sweep_options;
+  c.sweep->add_option("SPEC", w.spec_path, "the sweep spec (JSON; docs/sweeps.md)")->required();
+  c.sweep->add_option("-o,--output", w.output_dir,
+                      "the sweep's folder (default: SPEC without .json, plus .sweep)");
+  auto* list = c.sweep->add_flag("--list", w.list, "print the tasks and which are done");
+  auto* task = c.sweep
+                   ->add_option("--task", w.task,
+                                "run task I (0-based) into its folder, or auto: I from "
+                                "SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX or PARALLEL_SEQ - 1")
+                   ->type_name("I|auto");
+  auto* gather = c.sweep->add_flag("--gather", w.gather,
+                                   "write sweep.csv (one row per task) and a plot of each measure "
+                                   "against each axis");
+  list->excludes(task)->excludes(gather);
+  task->excludes(gather);
+  c.sweep->add_flag("-y", w.overwrite,
+                    "redo a task whose folder holds the result of another sweep");
+  c.sweep->add_option("--plot-format", w.plot_format, "--gather's plots: png, svg or pdf")
+      ->check(CLI::IsMember({"png", "svg", "pdf"}))
+      ->type_name("FORMAT");
+  w.threads = cpus;
+  add_threads_option(*c.sweep, w.threads);
+  c.sweep->footer(
+      "Examples:\n"
+      "  rugosim sweep docs/sweeps/incline_friction.json --list\n"
+      "  seq 64 | parallel -j2 -N0 rugosim sweep docs/sweeps/incline_friction.json --task auto\n"
+      "  rugosim sweep docs/sweeps/incline_friction.json --gather\n"
+      "One of --list, --task and --gather. A task already done (its folder holds this sweep's "
+      "result) is skipped, so a stopped array can be resubmitted as it is.");
+
   c.plot = c.app.add_subcommand(
       "plot",
       "draw friction per collision event and velocity over time as PNG, SVG or PDF (gnuplot)");

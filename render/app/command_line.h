@@ -25,6 +25,7 @@ struct CommandLine {
   CLI::App* join = nullptr;
   CLI::App* plan = nullptr;
   CLI::App* plan_render = nullptr;
+  CLI::App* sweep = nullptr;
 
   // What was given; complete only after finish_parse().
   std::string scene;  // validate and info
@@ -35,6 +36,7 @@ struct CommandLine {
   PlotOptions plot_options;
   JoinOptions join_options;
   PlanOptions plan_options;
+  SweepOptions sweep_options;
   std::optional<double> plan_fps;  // set into plan_options by finish_parse
   int plan_crf = 18;
 

@@ -149,4 +149,21 @@ struct JoinOptions {
 // written), 1 for an I/O failure.
 int run_join(const JoinOptions& options);
 
+struct SweepOptions {
+  std::string spec_path;
+  std::string output_dir;  // -o: the sweep's folder; empty: SPEC's path without .json + ".sweep"
+  bool list = false;       // --list: print the tasks (and which are done)
+  std::string task;        // --task I or auto; empty: none
+  bool gather = false;     // --gather: sweep.csv and the plots
+  bool overwrite = false;  // -y: redo a task whose folder holds another sweep's result
+  int threads = 1;         // of collision detection in each task (--threads)
+  std::string plot_format = "png";  // --plot-format png, svg or pdf
+};
+
+// A parameter sweep (sweep_spec.h; docs/sweeps.md): --list prints the tasks, --task runs one
+// into DIR/task_NNNNNN (atomically; a task already done is skipped), --gather writes DIR/sweep.csv
+// and DIR/plots. Exit 2 for a bad spec or option (every error: file, JSON path, expectation), 1
+// when --gather finds tasks not done or a task fails; a task's own exit code otherwise.
+int run_sweep(const SweepOptions& options);
+
 }  // namespace rugosim::app

@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   if (c.plot->parsed()) return run_plot(c.plot_options);
   if (c.join->parsed()) return run_join(c.join_options);
   if (c.plan_render->parsed()) return run_plan_render(c.plan_options);
+  if (c.sweep->parsed()) return run_sweep(c.sweep_options);
   fmt::print("{}", c.app.help());
   return kExitOk;
 }

@@ -11,92 +11,12 @@
 namespace rugosim::app {
 namespace {
 
-// Distinct colours that stay apart for colour-blind readers (the Tableau 10 hues).
-constexpr std::string_view kColours[] = {"1f77b4", "d62728", "2ca02c", "ff7f0e", "9467bd",
-                                         "8c564b", "e377c2", "17becf", "7f7f7f", "bcbd22"};
-constexpr std::size_t kColourCount = std::size(kColours);
-
 // Beyond these, one series or legend entry per pair or body is clutter, not information: the
 // pairs past the ten with the most events share grey.
 constexpr std::size_t kMostPairSeries = 10;
 constexpr std::size_t kMostBodyLegend = 12;
 constexpr const char* kOtherPairs = "'#9a9a9a'";
 constexpr const char* kOtherPairsLight = "'#B09a9a9a'";
-
-std::string colour(std::size_t i) {
-  return fmt::format("'#{}'", kColours[i % kColourCount]);
-}
-
-// The same hue, mostly transparent (gnuplot's #AARRGGBB counts AA as transparency).
-std::string light_colour(std::size_t i) {
-  return fmt::format("'#B0{}'", kColours[i % kColourCount]);
-}
-
-// A value for a datablock: shortest exact form; NaN (gnuplot skips the point) for a value that
-// is not finite.
-void append_value(std::string& out, double x) {
-  if (std::isfinite(x)) {
-    append_number(out, x);
-  } else {
-    out.append("NaN");
-  }
-}
-
-// Settings shared by both figures: the terminal of the format at its size, in a clean
-// sans-serif font (11 pt at 1000 px wide, in proportion), a light grid behind the data, an open
-// frame.
-std::string preamble(const FigureFormat& format) {
-  const double font = 11.0 * std::min(format.width / 1000.0, format.height / 600.0 * 1.2);
-  std::string terminal;
-  if (format.kind == "svg") {
-    terminal = fmt::format(
-        "set terminal svg size {},{} dynamic enhanced font 'DejaVu Sans,{:.1f}' "
-        "linewidth 1.2 background rgb 'white'\n",
-        format.width, format.height, font);
-  } else if (format.kind == "pdf") {
-    // pdfcairo measures in inches: a hundredth per pixel, the font in the same proportion.
-    terminal = fmt::format(
-        "set terminal pdfcairo size {}in,{}in enhanced font 'DejaVu Sans,{:.1f}' "
-        "linewidth 1.2 background rgb 'white'\n",
-        format.width / 100.0, format.height / 100.0, font * 0.72);
-  } else {
-    terminal = fmt::format(
-        "set terminal pngcairo size {},{} enhanced font 'DejaVu Sans,{:.1f}' "
-        "linewidth 1.2 background rgb 'white'\n",
-        format.width, format.height, font);
-  }
-  return "set encoding utf8\n" + terminal +
-         "set border 3 linecolor rgb '#444444'\n"
-         "set tics nomirror out\n"
-         "set grid xtics ytics linetype 1 linecolor rgb '#e4e4e4' linewidth 1\n"
-         "set grid back\n"
-         "set title font ',14'\n";
-}
-
-// The figure's title and, under it in grey, what it was drawn from (file names are shown as
-// they are, never read as enhanced-text markup).
-void append_titles(std::string& script, std::string_view title, std::string_view subtitle) {
-  script.append("set label 90 ").append(gnuplot_quote(title));
-  script.append(" at screen 0.5, screen 0.965 center font ',14' noenhanced front\n");
-  script.append("set label 91 ").append(gnuplot_quote(subtitle));
-  script.append(
-      " at screen 0.5, screen 0.925 center font ',10' textcolor rgb '#666666' noenhanced "
-      "front\n");
-}
-
-void append_datablock(std::string& script, std::string_view name, const std::string& rows) {
-  script.append(name).append(" << EOD\n").append(rows).append("EOD\n");
-}
-
-// A legend entry cut to fit beside the axes.
-std::string shortened(const std::string& text) {
-  constexpr std::size_t kLongest = 24;
-  if (text.size() <= kLongest) return text;
-  std::size_t cut = kLongest - 1;
-  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80)
-    --cut;  // UTF-8
-  return text.substr(0, cut) + "…";
-}
 
 std::string pair_label(const Events& events, std::size_t a, std::size_t b) {
   return fmt::format("{} – {}", events.bodies[a], events.bodies[b]);

@@ -12,16 +12,9 @@
 #include <vector>
 
 #include "render/app/csv_reader.h"
+#include "render/app/plot_style.h"
 
 namespace rugosim::app {
-
-// Where a figure goes: "png" (pngcairo), "svg" or "pdf" (pdfcairo), width × height in pixels
-// (a PDF gets a hundredth of an inch per pixel, and its fonts the same proportion).
-struct FigureFormat {
-  std::string kind = "png";
-  int width = 1000;
-  int height = 600;
-};
 
 // The range of the finite values added.
 struct Range {

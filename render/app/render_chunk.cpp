@@ -6,54 +6,24 @@
 
 #include <fmt/core.h>
 
+#include "render/app/task_index.h"
+
 namespace rugosim::app {
-namespace {
-
-std::optional<std::size_t> whole_number(std::string_view text) {
-  std::size_t value = 0;
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (text.empty() || error != std::errc() || end != text.data() + text.size()) return std::nullopt;
-  return value;
-}
-
-// The task index of the engine running this process, 0-based.
-std::size_t index_from_environment() {
-  struct Source {
-    const char* variable;
-    std::size_t base;
-  };
-  for (const Source& s : {Source{"SLURM_ARRAY_TASK_ID", 0}, Source{"JOB_COMPLETION_INDEX", 0},
-                          Source{"PARALLEL_SEQ", 1}}) {
-    const char* value = std::getenv(s.variable);
-    if (value == nullptr) continue;
-    const std::optional<std::size_t> n = whole_number(value);
-    if (!n || *n < s.base) {
-      throw std::invalid_argument(
-          fmt::format("--chunk auto: {}=\"{}\" is not a task index (expected a whole number >= {})",
-                      s.variable, value, s.base));
-    }
-    return *n - s.base;
-  }
-  throw std::invalid_argument(
-      "--chunk auto: none of SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX and PARALLEL_SEQ is set "
-      "(run it as a Slurm array task, a Kubernetes Indexed Job or under GNU parallel, or give "
-      "I/N)");
-}
-
-}  // namespace
 
 ChunkIndex parse_chunk(const std::string& text) {
   const std::size_t slash = text.find('/');
-  const std::optional<std::size_t> count =
-      slash == std::string::npos ? std::nullopt : whole_number(text.substr(slash + 1));
+  // 0 for a count that is missing or not a whole number (0 chunks is refused too).
+  const std::size_t count =
+      slash == std::string::npos ? 0 : whole_number(text.substr(slash + 1)).value_or(0);
   const std::string index_text = slash == std::string::npos ? text : text.substr(0, slash);
   const std::optional<std::size_t> index =
       index_text == "auto" ? std::optional<std::size_t>(0) : whole_number(index_text);
-  if (!count || !index || *count == 0) {
+  if (!index || count == 0) {
     throw std::invalid_argument(
         fmt::format("--chunk: expected I/N or auto/N (0 <= I < N), got \"{}\"", text));
   }
-  ChunkIndex chunk{index_text == "auto" ? index_from_environment() : *index, *count};
+  const ChunkIndex chunk{
+      index_text == "auto" ? task_index_from_environment("--chunk auto") : *index, count};
   if (chunk.index >= chunk.count) {
     throw std::invalid_argument(
         fmt::format("--chunk {}: the index must be below {} (0-based)", text, chunk.count));
