@@ -127,12 +127,10 @@ std::string sweep_line_script(const SweepSpec& spec, const std::vector<nlohmann:
   for (std::size_t s = 0; s < series; ++s) {
     if (s > 0) script.append(", \\\n     ");
     const std::string title =
-        by ? gnuplot_quote(shortened(axis_label(spec, *by, spec.axes[*by].values[s]))) : "''";
-    script.append(
-        fmt::format("$S{} using 1:2 with {} linecolor rgb {} pointtype 7 pointsize 0.8 "
-                    "title {}",
-                    s, lines ? "linespoints" : "points", colour(s), title));
-    if (!by) script.append(" notitle");
+        by ? "title " + gnuplot_quote(shortened(axis_label(spec, *by, spec.axes[*by].values[s])))
+           : std::string("notitle");
+    script.append(fmt::format("$S{} using 1:2 with {} linecolor rgb {} pointtype 7 pointsize 0.8 {}",
+                              s, lines ? "linespoints" : "points", colour(s), title));
   }
   script.append("\n");
   return script;
