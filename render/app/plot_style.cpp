@@ -23,13 +23,10 @@ std::string colour(std::size_t i) {
   return fmt::format("'#{}'", kColours[i % kColourCount]);
 }
 
-// The same hue, mostly transparent (gnuplot's #AARRGGBB counts AA as transparency).
 std::string light_colour(std::size_t i) {
   return fmt::format("'#B0{}'", kColours[i % kColourCount]);
 }
 
-// A value for a datablock: shortest exact form; NaN (gnuplot skips the point) for a value that
-// is not finite.
 void append_value(std::string& out, double x) {
   if (std::isfinite(x)) {
     append_number(out, x);
@@ -38,9 +35,6 @@ void append_value(std::string& out, double x) {
   }
 }
 
-// Settings shared by both figures: the terminal of the format at its size, in a clean
-// sans-serif font (11 pt at 1000 px wide, in proportion), a light grid behind the data, an open
-// frame.
 std::string preamble(const FigureFormat& format) {
   const double font = 11.0 * std::min(format.width / 1000.0, format.height / 600.0 * 1.2);
   std::string terminal;
@@ -69,8 +63,6 @@ std::string preamble(const FigureFormat& format) {
          "set title font ',14'\n";
 }
 
-// The figure's title and, under it in grey, what it was drawn from (file names are shown as
-// they are, never read as enhanced-text markup).
 void append_titles(std::string& script, std::string_view title, std::string_view subtitle) {
   script.append("set label 90 ").append(gnuplot_quote(title));
   script.append(" at screen 0.5, screen 0.965 center font ',14' noenhanced front\n");
@@ -84,7 +76,6 @@ void append_datablock(std::string& script, std::string_view name, const std::str
   script.append(name).append(" << EOD\n").append(rows).append("EOD\n");
 }
 
-// A legend entry cut to fit beside the axes.
 std::string shortened(const std::string& text) {
   constexpr std::size_t kLongest = 24;
   if (text.size() <= kLongest) return text;

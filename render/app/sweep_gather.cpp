@@ -129,8 +129,9 @@ std::string sweep_line_script(const SweepSpec& spec, const std::vector<nlohmann:
     const std::string title =
         by ? "title " + gnuplot_quote(shortened(axis_label(spec, *by, spec.axes[*by].values[s])))
            : std::string("notitle");
-    script.append(fmt::format("$S{} using 1:2 with {} linecolor rgb {} pointtype 7 pointsize 0.8 {}",
-                              s, lines ? "linespoints" : "points", colour(s), title));
+    script.append(
+        fmt::format("$S{} using 1:2 with {} linecolor rgb {} pointtype 7 pointsize 0.8 {}", s,
+                    lines ? "linespoints" : "points", colour(s), title));
   }
   script.append("\n");
   return script;
@@ -257,7 +258,7 @@ int gather_sweep(const SweepSpec& spec, const std::string& dir, const std::strin
       }
     }
   }
-  fmt::print("wrote {} plots in {}\n", written, plots);
+  fmt::print("wrote {} plot{} in {}\n", written, written == 1 ? "" : "s", plots);
   return kExitOk;
 }
 

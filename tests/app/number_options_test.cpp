@@ -65,6 +65,7 @@ std::vector<NumericOption> table() {
   rows.push_back({"simulate", "--fps", {}, "1e309"});
   rows.push_back({"simulate", "--every", {}, kPast64Bits});
   rows.push_back({"join", "--chunks", {}, kPast64Bits});
+  rows.push_back({"sweep", "--threads", {}, kPast64Bits});
   rows.push_back({"render", "--duration", {}, "3.4e6"});
   rows.push_back({"render", "--fps", {}, "1e309"});
   rows.push_back({"render", "--roughness-scale", {"0", "1e-300"}, "1e309"});
@@ -90,6 +91,12 @@ class NumberOptions : public ::testing::Test {
     const std::string scene = (source_dir() / "scenes" / "validation_bouncing_disk.json").string();
     if (o.command == "join") {
       return program() + " join " + output().string() + " " + o.name + " '" + value + "'";
+    }
+    if (o.command == "sweep") {  // the sweep's folder is the output that must not appear
+      const std::string spec =
+          (source_dir() / "scenes" / "sweeps" / "incline_friction.json").string();
+      return program() + " sweep " + spec + " --task 0 -o " + output().string() + " " + o.name +
+             " '" + value + "'";
     }
     std::string line = program() + " " + o.command + " " + scene;
     const bool sets_duration = o.name == "--duration";

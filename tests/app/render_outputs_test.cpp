@@ -321,7 +321,7 @@ TEST(UnknownCommand, SuggestsTheNearestCommandForATypo) {
             "unknown command \"plott\"; did you mean \"plot\"?");
   EXPECT_EQ(rugosim::app::unknown_command_error(*c, "xyz"),
             "unknown command \"xyz\"; the commands are validate, info, simulate, render, "
-            "snapshot, join, plan, plot");
+            "snapshot, join, plan, sweep, plot");
   for (const std::string known : {"render", "simulate", "--help", "-h", ""})
     EXPECT_EQ(rugosim::app::unknown_command_error(*c, known), "") << known;
 }
