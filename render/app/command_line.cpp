@@ -351,9 +351,9 @@ std::unique_ptr<CommandLine> make_command_line(int cpus) {
   add_threads_option(*c.sweep, w.threads);
   c.sweep->footer(
       "Examples:\n"
-      "  rugosim sweep docs/sweeps/incline_friction.json --list\n"
-      "  seq 64 | parallel -j2 -N0 rugosim sweep docs/sweeps/incline_friction.json --task auto\n"
-      "  rugosim sweep docs/sweeps/incline_friction.json --gather\n"
+      "  rugosim sweep scenes/sweeps/incline_friction.json --list\n"
+      "  seq 64 | parallel -j2 -N0 rugosim sweep scenes/sweeps/incline_friction.json --task auto\n"
+      "  rugosim sweep scenes/sweeps/incline_friction.json --gather\n"
       "One of --list, --task and --gather. A task already done (its folder holds this sweep's "
       "result) is skipped, so a stopped array can be resubmitted as it is.");
 

@@ -65,9 +65,20 @@ double evaluate(const std::string& text,
         }
         used->push_back(entry.first);
       }
-      return 0.0;  // parsed, not evaluated
+      parser.Eval();  // any value will do (1/0 is inf, not an error): how many it gives matters
+      if (parser.GetNumResults() != 1) {
+        throw ExpressionError(
+            fmt::format("\"{}\" gives {} values (separated by commas); expected one", text,
+                        parser.GetNumResults()));
+      }
+      return 0.0;  // the names it uses, not its value
     }
     const double result = parser.Eval();
+    if (parser.GetNumResults() != 1) {  // "a, b": muparser's list of results
+      throw ExpressionError(
+          fmt::format("\"{}\" gives {} values (separated by commas); expected one", text,
+                      parser.GetNumResults()));
+    }
     if (!std::isfinite(result)) {
       throw ExpressionError(fmt::format("\"{}\" has no finite value ({})", text, result));
     }

@@ -22,9 +22,11 @@ namespace {
 constexpr std::size_t kMostSeries = 10;
 
 std::optional<double> measure_of(const nlohmann::json& result, const std::string& name) {
-  const nlohmann::json& v = result["measures"][name];
-  if (!v.is_number()) return std::nullopt;
-  return v.get<double>();
+  const auto measures = result.find("measures");
+  if (measures == result.end() || !measures->is_object()) return std::nullopt;
+  const auto v = measures->find(name);
+  if (v == measures->end() || !v->is_number()) return std::nullopt;
+  return v->get<double>();
 }
 
 double axis_value(const SweepSpec& spec, std::size_t task, std::size_t a) {
@@ -121,8 +123,9 @@ std::string sweep_line_script(const SweepSpec& spec, const std::vector<nlohmann:
   script.append(
       "set key at screen 0.79, screen 0.88 left top vertical Left reverse samplen 2 nobox "
       "noenhanced\n");
-  // With more than two axes a series holds several points per x: points, not lines.
-  const bool lines = spec.axes.size() <= 2;
+  // Lines join the points of one series in order of x: with one axis, or one series per value
+  // of the only other axis. Otherwise a series holds several points per x: points only.
+  const bool lines = spec.axes.size() == 1 || (by && spec.axes.size() == 2);
   script.append("plot ");
   for (std::size_t s = 0; s < series; ++s) {
     if (s > 0) script.append(", \\\n     ");

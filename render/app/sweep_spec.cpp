@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -13,6 +14,7 @@
 #include "engine/scene/json_reader.h"
 #include "engine/scene/scene_loader.h"
 #include "render/app/sweep_expression.h"
+#include "render/app/sweep_spec_parts.h"
 
 namespace rugosim::app {
 namespace {
@@ -21,46 +23,12 @@ using nlohmann::json;
 using scene_json::child;
 using scene_json::Reader;
 using scene_json::shown;
+using sweep_spec_parts::check_name;
+using sweep_spec_parts::read_command;
+using sweep_spec_parts::read_measure;
 
 constexpr std::size_t kMostTasks = 1000000;
 constexpr std::size_t kMostValues = 100000;
-
-const std::vector<std::string> kReductions = {"first", "last",  "mean", "min",
-                                              "max",   "delta", "range"};
-const std::vector<std::string> kEventReductions = {"first", "last",  "mean", "min",  "max",
-                                                   "delta", "range", "sum",  "count"};
-const std::vector<std::string> kTrajectoryColumns = {"x",  "y",     "angle",          "vx",
-                                                     "vy", "omega", "kinetic_energy", "speed"};
-const std::vector<std::string> kEventColumns = {"time", "t_a", "t_b",      "x",        "y",
-                                                "nx",   "ny",  "lambda_a", "lambda_b", "mu",
-                                                "vn",   "vt",  "jn",       "jt"};
-// stats.json's numbers (telemetry.h); the accuracy object is not a measure.
-const std::vector<std::string> kStatsKeys = {"steps",
-                                             "bisections",
-                                             "collisions",
-                                             "contacts",
-                                             "fallbacks",
-                                             "min_step_fallbacks",
-                                             "pass_fallbacks",
-                                             "rigid_clusters",
-                                             "unresolved_states",
-                                             "crossing_fallbacks",
-                                             "stalled_steps",
-                                             "crossings",
-                                             "passes",
-                                             "islands_slept",
-                                             "islands_woken",
-                                             "idle_jumps",
-                                             "free_steps",
-                                             "rest_steps",
-                                             "rest_contacts",
-                                             "rest_sweeps",
-                                             "rest_unconverged",
-                                             "rest_withdrawn",
-                                             "body_steps",
-                                             "sim_time",
-                                             "wall_time",
-                                             "stalled_time"};
 
 std::string read_file(const std::string& path, bool& ok) {
   std::ifstream in(path, std::ios::binary);
@@ -77,55 +45,88 @@ json number_value(double x) {
   return x;
 }
 
-// A name the CSV and the expressions can use.
-void check_name(Reader& r, const json& v, const std::string& path, std::string& out,
-                std::set<std::string>& taken) {
-  r.string(v, path, out);
-  if (out.empty() && v.is_string()) {
-    r.error(path, "expected a name, got \"\"");
-  } else if (!out.empty() && !valid_variable_name(out)) {
-    r.error(path, fmt::format("expected a name of letters, digits and \"_\" that starts with a "
-                              "letter and is not a built-in function or constant, got {}",
-                              shown(v)));
-  } else if (!out.empty() && (out == "task" || !taken.insert(out).second)) {
-    r.error(path, fmt::format("the name \"{}\" is taken (by \"task\", an axis or a measure)", out));
+// RFC 6901's tokens of a pointer that starts with "/": "~1" is "/", "~0" is "~".
+std::vector<std::string> pointer_tokens(const std::string& text) {
+  std::vector<std::string> tokens;
+  for (std::size_t at = 1; at <= text.size();) {
+    const std::size_t end = std::min(text.find('/', at), text.size());
+    std::string token;
+    for (std::size_t i = at; i < end; ++i) {
+      if (text[i] == '~' && i + 1 < end) {
+        token += text[i + 1] == '1' ? '/' : '~';
+        ++i;
+      } else {
+        token += text[i];
+      }
+    }
+    tokens.push_back(std::move(token));
+    at = end + 1;
   }
+  return tokens;
+}
+
+// An array index as RFC 6901 writes one ("0", or digits without a leading zero) below `size`.
+bool array_index(const std::string& token, std::size_t size) {
+  if (token.empty() || token.size() > 18 || (token.size() > 1 && token[0] == '0')) return false;
+  if (!std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return false;
+  return std::stoull(token) < size;
 }
 
 // A JSON pointer whose parent exists in the scene (the key itself may be new: a default the
-// scene leaves out).
+// scene leaves out; an array index must exist). Walked token by token here: nlohmann's own
+// lookups throw on an index too large to read or written with a leading zero.
 void check_pointer(Reader& r, const json& scene, const std::string& text, const std::string& path) {
-  json::json_pointer pointer;
   try {
-    pointer = json::json_pointer(text);
+    json::json_pointer{text};
   } catch (const json::exception&) {
     r.error(path, fmt::format("expected a JSON pointer into the scene such as "
                               "\"/world/friction_gain\", got \"{}\"",
                               text));
     return;
   }
-  if (pointer.empty()) {
+  if (text.empty()) {
     r.error(path,
             "expected a JSON pointer to a value inside the scene, got \"\" (the whole scene)");
     return;
   }
-  const json::json_pointer parent = pointer.parent_pointer();
-  if (!scene.contains(parent)) {
-    r.error(path, fmt::format("the scene has nothing at \"{}\"", parent.to_string()));
-    return;
-  }
-  const json& holder = scene.at(parent);
-  if (holder.is_array()) {
-    const std::string& last = pointer.back();
-    const bool index = !last.empty() && std::all_of(last.begin(), last.end(), ::isdigit);
-    if (!index || std::stoull(last) >= holder.size()) {
-      r.error(path, fmt::format("\"{}\" is an array of {} values: expected an index below {}",
-                                parent.to_string(), holder.size(), holder.size()));
+  const std::vector<std::string> tokens = pointer_tokens(text);
+  const json* at = &scene;
+  std::string walked;
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const std::string& token = tokens[i];
+    const bool last = i + 1 == tokens.size();
+    if (at->is_array()) {
+      if (!array_index(token, at->size())) {
+        r.error(path, fmt::format("\"{}\" is an array of {} values: expected an index below {} "
+                                  "(no leading zeros), got \"{}\"",
+                                  walked.empty() ? "/" : walked, at->size(), at->size(), token));
+        return;
+      }
+      if (!last) at = &(*at)[std::stoull(token)];
+    } else if (at->is_object()) {
+      const auto found = at->find(token);
+      if (found == at->end() && !last) {
+        r.error(path, fmt::format("the scene has nothing at \"{}\"", child(walked, token)));
+        return;
+      }
+      if (!last) at = &*found;
+    } else {
+      r.error(path, fmt::format("\"{}\" is {}, not an object or an array", walked,
+                                scene_json::type_name(*at)));
+      return;
     }
-  } else if (!holder.is_object()) {
-    r.error(path, fmt::format("\"{}\" is {}, not an object or an array", parent.to_string(),
-                              scene_json::type_name(holder)));
+    walked = child(walked, token);
   }
+}
+
+// Two changes to the scene that overlap: the same key, or one inside the other.
+bool overlaps(const std::string& a, const std::string& b) {
+  const auto inside = [](const std::string& outer, const std::string& inner) {
+    return inner.size() > outer.size() && inner.compare(0, outer.size(), outer) == 0 &&
+           inner[outer.size()] == '/';
+  };
+  return a == b || inside(a, b) || inside(b, a);
 }
 
 void read_axis_values(Reader& r, const json& a, const std::string& path, SweepAxis& axis) {
@@ -141,8 +142,8 @@ void read_axis_values(Reader& r, const json& a, const std::string& path, SweepAx
               fmt::format("expected an array of 1 to {} values, got {}", kMostValues, shown(v)));
       return;
     }
-    for (const json& x : v)
-      axis.values.push_back(x);
+    for (const json& x : v)  // a whole number as an integer, as the docs promise
+      axis.values.push_back(x.is_number_float() ? number_value(x.get<double>()) : x);
     for (std::size_t i = 0; i < v.size(); ++i) {
       if (v[i].is_number() && !std::isfinite(v[i].get<double>()))
         r.error(child(child(path, "values"), i), "expected a finite number");
@@ -170,14 +171,26 @@ void read_axis_values(Reader& r, const json& a, const std::string& path, SweepAx
       double step = 0.0;
       r.positive(g["step"], child(rp, "step"), step, "");
       if (ok && step > 0.0) {
-        const double n = std::floor(std::abs(to - from) / step + 1e-9) + 1.0;
-        if (n > double(kMostValues)) {
+        const double steps = std::abs(to - from) / step;
+        const double whole = std::round(steps);
+        if (whole + 1.0 > double(kMostValues)) {
           r.error(child(rp, "step"), fmt::format("expected at most {} values", kMostValues));
+        } else if (std::abs(steps - whole) > 1e-9 * std::max(1.0, steps)) {
+          // "to" is a value of the axis, exactly as written: the step must reach it.
+          r.error(child(rp, "step"),
+                  fmt::format("expected a step that divides to − from ({}) into whole steps, "
+                              "got {} ({} steps); use \"count\" for evenly spaced values",
+                              to - from, step, steps));
         } else {
-          count = static_cast<std::size_t>(n);
-          to = from + std::copysign(step * double(count - 1), to - from);
+          count = static_cast<std::size_t>(whole) + 1;
         }
       }
+    }
+    if (ok && count == 1 && from != to) {
+      r.error(child(rp, "count"),
+              "expected a count of at least 2 from \"from\" to a different "
+              "\"to\" (both ends are values of the axis)");
+      return;
     }
     if (!ok || count == 0) return;
     for (std::size_t i = 0; i < count; ++i) {
@@ -198,171 +211,12 @@ void read_axis_values(Reader& r, const json& a, const std::string& path, SweepAx
       r.error(sp, "expected \"count\"");
     else
       r.count(s["count"], child(sp, "count"), count, 1, kMostValues, "seeds");
+    if (count > 0 && first > std::numeric_limits<std::uint64_t>::max() - (count - 1)) {
+      r.error(child(sp, "count"), "expected the seeds to stay below 2^64 (first + count − 1)");
+      return;
+    }
     for (std::size_t i = 0; i < count; ++i)
       axis.values.emplace_back(first + i);
-  }
-}
-
-void read_measure(Reader& r, const json& m, const std::string& path, const json& scene,
-                  SweepMeasure& out, std::set<std::string>& taken) {
-  if (!r.is_object(m, path)) return;
-  r.check_keys(m, path, {"name", "stats", "trajectory", "events", "expression"});
-  if (m.contains("name"))
-    check_name(r, m["name"], child(path, "name"), out.name, taken);
-  else
-    r.error(path, "expected \"name\"");
-  const int given = int(m.contains("stats")) + int(m.contains("trajectory")) +
-                    int(m.contains("events")) + int(m.contains("expression"));
-  if (given != 1) {
-    r.error(path,
-            "expected exactly one of \"stats\", \"trajectory\", \"events\" and \"expression\"");
-    return;
-  }
-  if (m.contains("stats")) {
-    out.source = SweepMeasure::Source::kStats;
-    r.string(m["stats"], child(path, "stats"), out.key);
-    if (m["stats"].is_string() &&
-        std::find(kStatsKeys.begin(), kStatsKeys.end(), out.key) == kStatsKeys.end()) {
-      std::string message = fmt::format("stats.json has no number \"{}\"", out.key);
-      const std::string suggestion = closest_match(out.key, kStatsKeys);
-      if (!suggestion.empty()) message += fmt::format("; did you mean \"{}\"?", suggestion);
-      r.error(child(path, "stats"), message);
-    }
-    return;
-  }
-  if (m.contains("expression")) {
-    out.source = SweepMeasure::Source::kExpression;
-    r.string(m["expression"], child(path, "expression"), out.expression);
-    return;
-  }
-  const bool events = m.contains("events");
-  out.source = events ? SweepMeasure::Source::kEvents : SweepMeasure::Source::kTrajectory;
-  const std::string p = child(path, events ? "events" : "trajectory");
-  const json& d = m[events ? "events" : "trajectory"];
-  if (!r.is_object(d, p)) return;
-  if (events)
-    r.check_keys(d, p, {"column", "reduce", "kind", "body", "from", "to"});
-  else
-    r.check_keys(d, p, {"column", "reduce", "body", "from", "to"});
-  const auto& columns = events ? kEventColumns : kTrajectoryColumns;
-  const auto& reductions = events ? kEventReductions : kReductions;
-  const auto one_of = [&](const char* key, const std::vector<std::string>& allowed,
-                          std::string& value) {
-    if (!d.contains(key)) return;
-    r.string(d[key], child(p, key), value);
-    if (!d[key].is_string() || std::find(allowed.begin(), allowed.end(), value) != allowed.end())
-      return;
-    std::string list;
-    for (const auto& a : allowed)
-      list += (list.empty() ? "" : ", ") + a;
-    std::string message = fmt::format("expected one of {}, got {}", list, shown(d[key]));
-    const std::string suggestion = closest_match(value, allowed);
-    if (!suggestion.empty()) message += fmt::format("; did you mean \"{}\"?", suggestion);
-    r.error(child(p, key), message);
-  };
-  out.reduce = "last";
-  one_of("reduce", reductions, out.reduce);
-  if (!d.contains("column") && !(events && out.reduce == "count"))
-    r.error(p, "expected \"column\"");
-  one_of("column", columns, out.column);
-  if (events) one_of("kind", {"collision", "contact"}, out.kind);
-  if (d.contains("body")) {
-    r.string(d["body"], child(p, "body"), out.body);
-  } else if (!events) {
-    r.error(p, "expected \"body\": the name of a body that moves");
-  }
-  if (!out.body.empty() && scene.contains("bodies") && scene["bodies"].is_array()) {
-    const json* found = nullptr;
-    std::vector<std::string> names;
-    for (const json& b : scene["bodies"]) {
-      if (!b.is_object() || !b.contains("name") || !b["name"].is_string()) continue;
-      names.push_back(b["name"].get<std::string>());
-      if (names.back() == out.body) found = &b;
-    }
-    if (found == nullptr) {
-      std::string message = fmt::format("the scene has no body named \"{}\"", out.body);
-      const std::string suggestion = closest_match(out.body, names);
-      if (!suggestion.empty()) message += fmt::format("; did you mean \"{}\"?", suggestion);
-      r.error(child(p, "body"), message);
-    } else if (!events && found->contains("fixed") && found->at("fixed") == json(true)) {
-      r.error(child(p, "body"),
-              fmt::format("\"{}\" is fixed: trajectory.csv has no rows of it", out.body));
-    }
-  }
-  double t = 0.0;
-  if (d.contains("from") && r.number(d["from"], child(p, "from"), t)) out.from = t;
-  if (d.contains("to") && r.number(d["to"], child(p, "to"), t)) out.to = t;
-  if (out.from && out.to && *out.to < *out.from)
-    r.error(child(p, "to"), fmt::format("expected a time >= \"from\" ({})", *out.from));
-}
-
-void read_command(Reader& r, const json& c, const std::string& path, SweepCommand& out) {
-  if (!r.is_object(c, path)) return;
-  r.check_keys(c, path, {"simulate", "render"});
-  if (c.size() != 1) {
-    r.error(path, "expected exactly one of \"simulate\" and \"render\"");
-    return;
-  }
-  out.render = c.contains("render");
-  const std::string p = child(path, out.render ? "render" : "simulate");
-  const json& o = c[out.render ? "render" : "simulate"];
-  if (!r.is_object(o, p)) return;
-  if (out.render)
-    r.check_keys(o, p, {"accuracy", "duration", "fps", "size", "format", "crf"});
-  else
-    r.check_keys(o, p, {"accuracy", "duration", "fps", "outputs"});
-  if (o.contains("accuracy")) {
-    std::string preset;
-    r.string(o["accuracy"], child(p, "accuracy"), preset);
-    if (o["accuracy"].is_string() && preset != "draft" && preset != "normal" && preset != "precise")
-      r.error(child(p, "accuracy"),
-              fmt::format("expected draft, normal or precise, got {}", shown(o["accuracy"])));
-    else if (!preset.empty())
-      out.preset = preset;
-  }
-  double x = 0.0;
-  if (o.contains("duration")) {
-    r.positive(o["duration"], child(p, "duration"), x, "s");
-    if (x > 0.0) out.duration = x;
-  }
-  if (o.contains("fps")) {
-    x = 0.0;
-    r.ranged(o["fps"], child(p, "fps"), x, 0.0, true, 1000.0, false, "a number in (0, 1000]");
-    if (x > 0.0) out.fps = x;
-  }
-  if (o.contains("outputs")) {
-    const json& list = o["outputs"];
-    if (!list.is_array())
-      r.error(child(p, "outputs"),
-              "expected an array such as [\"trajectory\", \"events\", \"stats\"]");
-    for (std::size_t i = 0; list.is_array() && i < list.size(); ++i) {
-      std::string name;
-      r.string(list[i], child(child(p, "outputs"), i), name);
-      if (name == "trajectory" || name == "events" || name == "stats")
-        out.outputs.push_back(name);
-      else if (list[i].is_string())
-        r.error(child(child(p, "outputs"), i),
-                fmt::format("expected trajectory, events or stats, got {}", shown(list[i])));
-    }
-  }
-  if (o.contains("size")) {
-    r.string(o["size"], child(p, "size"), out.size);
-    int w = 0, h = 0;
-    char tail = 0;
-    if (o["size"].is_string() && (std::sscanf(out.size.c_str(), "%dx%d%c", &w, &h, &tail) != 2 ||
-                                  w < 16 || h < 16 || w > 8192 || h > 8192))
-      r.error(child(p, "size"),
-              fmt::format("expected \"WxH\" with 16..8192 pixels each, got {}", shown(o["size"])));
-  }
-  if (o.contains("format")) {
-    r.string(o["format"], child(p, "format"), out.format);
-    if (o["format"].is_string() && out.format != "mp4" && out.format != "png")
-      r.error(child(p, "format"), fmt::format("expected mp4 or png, got {}", shown(o["format"])));
-  }
-  if (o.contains("crf")) {
-    std::size_t crf = 18;
-    r.count(o["crf"], child(p, "crf"), crf, 0, 51, "x264's constant rate factor");
-    out.crf = static_cast<int>(crf);
   }
 }
 
@@ -506,15 +360,31 @@ SweepSpecLoad load_sweep_spec(const std::string& path) {
   }
   const bool have_scene = spec.scene.is_object();
 
+  // Every change to the scene, to find two that overlap (the same key, or one inside the
+  // other): which applies would depend on their order.
+  std::vector<std::string> targets;
+  const auto target = [&](const std::string& pointer, const std::string& at) {
+    if (have_scene) check_pointer(r, spec.scene, pointer, at);
+    for (const std::string& other : targets) {
+      if (pointer == other) {
+        r.error(at, fmt::format("\"{}\" is set elsewhere in the spec too", pointer));
+        break;
+      }
+      if (overlaps(pointer, other)) {
+        r.error(at, fmt::format("\"{}\" overlaps \"{}\", which the spec sets too", pointer, other));
+        break;
+      }
+    }
+    targets.push_back(pointer);
+  };
   if (root.contains("set") && r.is_object(root["set"], "/set")) {
     for (const auto& [pointer, value] : root["set"].items()) {
-      if (have_scene) check_pointer(r, spec.scene, pointer, child("/set", pointer));
+      target(pointer, child("/set", pointer));
       spec.set.emplace_back(pointer, value);
     }
   }
 
   std::set<std::string> taken;
-  std::set<std::string> targets;  // pointers set by the axes: each by one only
   if (!root.contains("axes") || !root["axes"].is_array() || root["axes"].empty()) {
     r.error("/axes", "expected an array of at least one axis");
   } else {
@@ -530,11 +400,6 @@ SweepSpecLoad load_sweep_spec(const std::string& path) {
       else
         r.error(p, "expected \"name\"");
       read_axis_values(r, a, p, axis);
-      const auto target = [&](const std::string& pointer, const std::string& at) {
-        if (have_scene) check_pointer(r, spec.scene, pointer, at);
-        if (!targets.insert(pointer).second)
-          r.error(at, fmt::format("\"{}\" is set by another axis too", pointer));
-      };
       if (a.contains("pointer")) {
         r.string(a["pointer"], child(p, "pointer"), axis.pointer);
         if (a["pointer"].is_string()) target(axis.pointer, child(p, "pointer"));
@@ -602,7 +467,7 @@ SweepSpecLoad load_sweep_spec(const std::string& path) {
                                fmt::format("task {} ({}) makes a scene that is not valid: {}", task,
                                            spec.describe(task), e.message)});
       }
-    } catch (const ExpressionError& e) {
+    } catch (const std::exception& e) {  // an expression without a value, a JSON error
       load.errors.push_back(
           {path, "/axes", fmt::format("task {} ({}): {}", task, spec.describe(task), e.what())});
     }

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <system_error>
 #include <unistd.h>
 
@@ -48,7 +49,10 @@ void remove_stale_partials(const std::string& dir, std::size_t task) {
     const std::string name = entry.path().filename().string();
     if (name.rfind(prefix, 0) != 0) continue;
     const std::optional<std::size_t> pid = whole_number(name.substr(prefix.size()));
-    if (!pid || (::kill(static_cast<pid_t>(*pid), 0) != 0 && errno == ESRCH)) {
+    // Our own pid too: a folder of an earlier process that had it (a retried container whose
+    // host name and pid repeat, as in a Kubernetes Indexed Job).
+    const bool ours = pid && *pid == static_cast<std::size_t>(::getpid());
+    if (!pid || ours || (::kill(static_cast<pid_t>(*pid), 0) != 0 && errno == ESRCH)) {
       fs::remove_all(entry.path(), error);
       fmt::print(stderr, "sweep: removed {}, left by a run of task {} that was stopped\n",
                  entry.path().string(), task);
@@ -56,11 +60,38 @@ void remove_stale_partials(const std::string& dir, std::size_t task) {
   }
 }
 
+extern "C" void on_sigterm(int) {
+  ::raise(SIGINT);
+}
+
+// While a task runs, SIGTERM (Slurm's scancel, a time limit, a preemption; Kubernetes stopping
+// a pod) stops it as Ctrl-C does: the command stops within its step and returns 130, and the
+// partial folder is removed. Before the command has installed its SIGINT handler, SIGINT ends
+// the process as SIGTERM would have.
+class SigtermAsSigint {
+ public:
+  SigtermAsSigint() {
+    struct sigaction action {};
+    action.sa_handler = on_sigterm;
+    sigemptyset(&action.sa_mask);
+    ::sigaction(SIGTERM, &action, &previous_);
+  }
+  ~SigtermAsSigint() { ::sigaction(SIGTERM, &previous_, nullptr); }
+  SigtermAsSigint(const SigtermAsSigint&) = delete;
+  SigtermAsSigint& operator=(const SigtermAsSigint&) = delete;
+
+ private:
+  struct sigaction previous_ {};
+};
+
 // Removes the partial folder unless the task completed.
 class PartialFolder {
  public:
+  // Created afresh: a folder already there (which remove_stale_partials would have removed)
+  // is never reused, so nothing of another run can slip into a result.
   explicit PartialFolder(std::string path) : path_(std::move(path)) {
-    fs::create_directories(path_);
+    if (!fs::create_directory(path_))
+      throw std::runtime_error(fmt::format("{} exists already", path_));
   }
   ~PartialFolder() {
     std::error_code error;
@@ -175,20 +206,20 @@ int run_sweep_task(const SweepSpec& spec, const std::string& dir, std::size_t ta
     }
     fs::remove_all(final_folder);
   }
+  nlohmann::json scene;
+  try {
+    scene = task_scene(spec, task);
+  } catch (const std::exception& e) {  // an expression without a value here, a JSON error
+    fmt::print(stderr, "error: {}: {}: {}\n", spec.file, what, e.what());
+    return kExitUsage;
+  }
   fs::create_directories(dir);
   remove_stale_partials(dir, task);
   PartialFolder partial(
       fmt::format("{}/{}{}-{}", dir, partial_prefix(task), host_name(), ::getpid()));
-
-  nlohmann::json scene;
-  try {
-    scene = task_scene(spec, task);
-  } catch (const ExpressionError& e) {
-    fmt::print(stderr, "error: {}: {}: {}\n", spec.file, what, e.what());
-    return kExitUsage;
-  }
   write_text(partial.path() + "/scene.json", scene.dump(2) + "\n");
   const auto start = std::chrono::steady_clock::now();
+  const SigtermAsSigint sigterm;
   const int code = run_command(spec, partial.path(), threads);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -18,6 +18,7 @@ awk -F, '
     gain = $column["gain"]
     if (!(gain in count)) order[++gains] = gain
     k = ++count[gain]
+    if ($column["stick"] != "0" && $column["stick"] != "1") { printf("task %s: stick is \"%s\", not 0 or 1\n", $1, $column["stick"]) > "/dev/stderr"; bad_row = 1 }
     angle[gain, k] = $column["angle"]
     stick[gain, k] = $column["stick"]
     mu[gain] = $column["mu"]
@@ -25,7 +26,7 @@ awk -F, '
   }
   END {
     if (rows != 64) { printf("expected 64 rows, got %d\n", rows) > "/dev/stderr"; exit 1 }
-    bad = 0
+    bad = bad_row
     for (g = 1; g <= gains; ++g) {
       gain = order[g]; n = count[gain]
       observed = n + 1; predicted = n + 1

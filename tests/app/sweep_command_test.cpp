@@ -10,6 +10,7 @@
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "support/program_under_test.h"
 
@@ -88,10 +89,16 @@ TEST_F(SweepCommand, TasksRunOnceAndGatherIntoOneTable) {
   while (std::getline(lines, row))
     ++rows;
   EXPECT_EQ(rows, 4);
-  // Task 1 (μ = 0.2, 45°) slides; task 2 (μ = 0.9, 10°) stays.
-  EXPECT_NE(csv.find("\n1,100,45,"), std::string::npos);
-  EXPECT_NE(csv.substr(csv.find("\n1,100,45,")).find(",1\n"), std::string::npos) << csv;
-  EXPECT_NE(csv.substr(csv.find("\n2,450,10,")).find(",0\n"), std::string::npos) << csv;
+  // Every row: task, gain, angle, x_end, steps, moved. The block slides at 45° with μ = 0.2
+  // (and 0.9 < tan 45°), and stays at 10°.
+  std::istringstream table(csv);
+  std::getline(table, row);
+  for (const char* expected : {"0,100,10,", "1,100,45,", "2,450,10,", "3,450,45,"}) {
+    ASSERT_TRUE(std::getline(table, row));
+    EXPECT_EQ(row.rfind(expected, 0), 0u) << row;
+    const bool slides = row.find(",45,") != std::string::npos;
+    EXPECT_EQ(row.substr(row.size() - 2), slides ? ",1" : ",0") << row;
+  }
   for (const char* plot :
        {"x_end_vs_gain.png", "x_end_vs_angle.png", "x_end_map.png", "moved_map.png"})
     EXPECT_GT(fs::file_size(out() / "plots" / plot), 1000u) << plot;
@@ -136,7 +143,8 @@ TEST_F(SweepCommand, AnotherSweepsFolderIsRefusedUnlessForced) {
       << refused.stderr_text;
   const CommandRun forced = sweep("--task 2 -y");
   EXPECT_EQ(forced.exit_code, 0) << forced.stderr_text;
-  EXPECT_NE(read(out() / "task_000002" / "scene.json").find("0.4"), std::string::npos);
+  const nlohmann::json scene = nlohmann::json::parse(read(out() / "task_000002" / "scene.json"));
+  EXPECT_EQ(scene["world"]["duration"], nlohmann::json(0.4));
 }
 
 TEST_F(SweepCommand, BadSpecsAndIndicesExit2WritingNothing) {

@@ -33,7 +33,8 @@ bash "$source/tests/app/check_stick_boundary.sh" out/sweep.csv || fail "the stic
 [ -s out/plots/stick_map.png ] && [ -s out/plots/slide_vs_angle.png ] || fail "--gather drew no plots"
 echo "incline: 64 tasks (32, then the array resubmitted: 32 skipped, 32 run), boundary at tan θ = μ"
 
-# A task killed half-way: a 200-body pile for 0.6 s at precise (about 2 s of work) as task 1.
+# A task killed half-way: a 200-body pile for 0.6 s at precise on one thread (about 4 s of work)
+# as task 1.
 cat >pile.json <<SPEC
 { "version": 1, "scene": "$source/scenes/pile_200.json",
   "axes": [ { "name": "duration", "values": [0.1, 0.6], "pointer": "/world/duration" } ],
@@ -42,9 +43,10 @@ cat >pile.json <<SPEC
 SPEC
 "$program" sweep pile.json -o pile --task 0 >/dev/null 2>&1 || fail "pile task 0 failed"
 stamp=$(stat -c %Y.%y pile/task_000000/result.json)
-"$program" sweep pile.json -o pile --task 1 >killed.log 2>&1 &
+"$program" sweep pile.json -o pile --task 1 --threads 1 >killed.log 2>&1 &
 victim=$!
-for _ in $(seq 300); do compgen -G "pile/.task_000001.partial-*/scene.json" >/dev/null && break; sleep 0.05; done
+for _ in $(seq 600); do compgen -G "pile/.task_000001.partial-*/stats.json.tmp-*" >/dev/null && break; sleep 0.05; done
+compgen -G "pile/.task_000001.partial-*/stats.json.tmp-*" >/dev/null || fail "task 1 did not start simulating within 30 s"
 sleep 0.3
 kill -KILL "$victim"
 wait "$victim" 2>/dev/null && fail "the task to kill had already finished"

@@ -78,6 +78,19 @@ TEST(SweepSpec, TheInclineSweepHas64TasksLastAxisFastest) {
   // The scene file itself is untouched by the spec.
   EXPECT_EQ(spec.scene["world"]["friction_gain"], json(250.0));
 
+  // A range's ends as written (0.1 + 3 × 0.2 is 0.7000000000000001 in doubles); whole numbers
+  // as integers, whether from a range or a list.
+  const ScratchDir dir("sweep_spec_values");
+  const SweepSpecLoad ends =
+      load_text(dir, spec_with(R"([{"name": "g", "range": {"from": 0.1, "to": 0.7, "step": 0.2},
+                          "pointer": "/world/friction_gain"},
+                         {"name": "s", "values": [1.0, 2.5], "pointer": "/world/duration"}])"));
+  ASSERT_TRUE(ends.errors.empty()) << first_error(ends);
+  EXPECT_EQ(ends.spec.axes[0].values.size(), 4u);
+  EXPECT_EQ(ends.spec.axes[0].values.back(), json(0.7));
+  EXPECT_TRUE(ends.spec.axes[1].values[0].is_number_integer());
+  EXPECT_EQ(ends.spec.axes[1].values[1], json(2.5));
+
   // The same bytes, the same hash; the hash is what a task's result is matched by.
   EXPECT_EQ(load_sweep_spec(incline_spec()).spec.hash, spec.hash);
 }
@@ -122,7 +135,7 @@ TEST(SweepSpec, ReportsEveryMistakeAtItsPath) {
        R"(/axes/1/name: the name "g" is taken)"},
       {spec_with(R"([{"name": "g", "values": [1], "pointer": "/world/friction_gain"},
                      {"name": "h", "values": [1], "pointer": "/world/friction_gain"}])"),
-       R"(/axes/1/pointer: "/world/friction_gain" is set by another axis too)"},
+       R"(/axes/1/pointer: "/world/friction_gain" is set elsewhere in the spec too)"},
       {spec_with(R"j([{"name": "angle", "values": [10],
                       "set": {"/world/gravity/0": "9.81 * sin(angel)"}}])j"),
        R"j(/axes/0/set/~1world~1gravity~10: "9.81 * sin(angel)": unknown name "angel" (did you mean "angle"?); the names known here: angle)j"},
@@ -150,6 +163,39 @@ TEST(SweepSpec, ReportsEveryMistakeAtItsPath) {
        "/command: expected exactly one of"},
       {spec_with(R"([{"name": "g", "values": [100, -1], "pointer": "/world/friction_gain"}])"),
        "/world/friction_gain: task 1 (g=-1) makes a scene that is not valid"},
+      // Pointers that nlohmann's own lookups would throw on, and changes that overlap.
+      {spec_with(
+           R"([{"name": "g", "values": [1], "pointer": "/world/gravity/99999999999999999999999"}])"),
+       R"(/axes/0/pointer: "/world/gravity" is an array of 2 values: expected an index below 2)"},
+      {spec_with(
+           R"([{"name": "g", "values": [1], "pointer": "/bodies/99999999999999999999999/name"}])"),
+       R"("/bodies" is an array of 2 values)"},
+      {spec_with(R"([{"name": "g", "values": [1], "pointer": "/world/gravity/00"}])"),
+       R"(got "00")"},
+      {spec_with(R"([{"name": "g", "values": [1], "pointer": "/world/duration/x"}])"),
+       R"("/world/duration" is a number, not an object or an array)"},
+      {spec_with(R"([{"name": "w", "values": [1, 2], "pointer": "/world"},
+                     {"name": "g", "values": [1], "pointer": "/world/friction_gain"}])"),
+       R"(/axes/1/pointer: "/world/friction_gain" overlaps "/world", which the spec sets too)"},
+      {fmt::format(R"({{"version": 1, "scene": "{}", "set": {{"/world/gravity": [0, -9.81]}},
+                       "axes": [{{"name": "s", "values": [1], "pointer": "/world/gravity/0"}}],
+                       "command": {{"simulate": {{}}}}}})",
+                   scene_path()),
+       R"(/axes/0/pointer: "/world/gravity/0" overlaps "/world/gravity", which the spec sets too)"},
+      {spec_with(axis, "[]", R"({"simulat": {}})"),
+       "/command/simulat: unknown key \"simulat\"; did you mean \"simulate\"?"},
+      {spec_with(R"([{"name": "g", "range": {"from": 0, "to": 1, "step": 0.3},
+                      "pointer": "/world/friction_gain"}])"),
+       "/axes/0/range/step: expected a step that divides to − from (1) into whole steps"},
+      {spec_with(R"([{"name": "g", "range": {"from": 0, "to": 1, "count": 1},
+                      "pointer": "/world/friction_gain"}])"),
+       "/axes/0/range/count: expected a count of at least 2"},
+      {spec_with(R"([{"name": "s", "seeds": {"first": 18446744073709551615, "count": 3},
+                      "pointer": "/world/seed"}])"),
+       "/axes/0/seeds/count: expected the seeds to stay below 2^64"},
+      {spec_with(
+           R"([{"name": "g", "values": [1], "set": {"/world/friction_gain": "100 * g, 5"}}])"),
+       R"("100 * g, 5" gives 2 values (separated by commas); expected one)"},
   };
   for (const Case& c : cases) {
     const std::string error = first_error(load_text(dir, c.text));
@@ -184,8 +230,9 @@ TEST(SweepSpec, RandomSpecsKeepTheTaskNumbering) {
           break;
         }
         case 1:
+          // A count of 1 is a range from a value to itself.
           values = fmt::format(R"("range": {{"from": 0.25, "to": {}, "count": {}}})",
-                               0.25 + double(1 + rng() % 50), n);
+                               n == 1 ? 0.25 : 0.25 + double(1 + rng() % 50), n);
           break;
         default:
           values = fmt::format(R"("seeds": {{"first": {}, "count": {}}})", rng() % 1000, n);
