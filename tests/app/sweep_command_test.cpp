@@ -134,6 +134,27 @@ TEST_F(SweepCommand, AKilledRunIsCleanedUpAndRedone) {
   EXPECT_TRUE(fs::exists(out() / "task_000001" / "result.json"));
 }
 
+// A retried container repeats its host name and often its pid: a partial folder named with the
+// new run's own pid is an old run's, never reused (its files would slip into the result).
+TEST_F(SweepCommand, APartialFolderWithTheRunsOwnPidIsNotReused) {
+  char host[256] = {};
+  ::gethostname(host, sizeof host - 1);
+  std::string name = host;
+  for (char& c : name) {
+    if (c == '-' || c == '/' || c == '.') c = '_';
+  }
+  // bash makes the folder with its own pid, then becomes rugosim (exec keeps the pid).
+  const std::string script = fmt::format(
+      "mkdir -p {0}/.task_000000.partial-{1}-$$ && touch {0}/.task_000000.partial-{1}-$$/STALE && "
+      "exec {2} sweep {3} -o {0} --task 0",
+      out().string(), name, program(), spec_.string());
+  const CommandRun run =
+      run_command_line("bash -c '" + script + "'", scratch_.path() / "stderr.txt");
+  EXPECT_EQ(run.exit_code, 0) << run.stderr_text;
+  EXPECT_TRUE(fs::exists(out() / "task_000000" / "result.json"));
+  EXPECT_FALSE(fs::exists(out() / "task_000000" / "STALE"));
+}
+
 TEST_F(SweepCommand, AnotherSweepsFolderIsRefusedUnlessForced) {
   ASSERT_EQ(sweep("--task 2").exit_code, 0);
   write_spec(scratch_.path(), 0.4);  // the spec changed: its results are another sweep's
