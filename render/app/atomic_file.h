@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -51,5 +52,12 @@ class RenamedFile {
   std::string temporary_;
   bool committed_ = false;
 };
+
+// `text` written to `path` through an AtomicFile: whole or not at all. Throws as AtomicFile does.
+// (Binary files of the sinks: png_io.h's write_file_atomically.)
+void write_text_atomically(const std::string& path, std::string_view text);
+
+// Every byte of the file at `path`; nullopt when it is missing, a folder or cannot be read.
+std::optional<std::string> read_whole_file(const std::string& path);
 
 }  // namespace rugosim::app

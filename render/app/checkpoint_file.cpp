@@ -1,7 +1,5 @@
 #include "render/app/checkpoint_file.h"
 
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 #include <fmt/core.h>
@@ -9,6 +7,7 @@
 #include "engine/core/byte_stream.h"
 #include "engine/core/hash.h"
 #include "engine/core/version.h"
+#include "render/app/atomic_file.h"
 #include "render/app/build_id.h"
 
 namespace rugosim::app {
@@ -24,11 +23,9 @@ std::uint64_t bytes_hash(std::string_view bytes) {
 }
 
 std::string read_bytes(const std::string& path) {
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw CheckpointError(path + ": cannot be read");
-  std::ostringstream bytes;
-  bytes << file.rdbuf();
-  return std::move(bytes).str();
+  std::optional<std::string> bytes = read_whole_file(path);
+  if (!bytes) throw CheckpointError(path + ": cannot be read");
+  return std::move(*bytes);
 }
 
 }  // namespace

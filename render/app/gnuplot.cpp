@@ -13,6 +13,8 @@
 
 #include <fmt/core.h>
 
+#include "render/app/sigint_guard.h"
+
 extern char** environ;
 
 namespace rugosim::app {
@@ -33,24 +35,6 @@ class Fd {
 
  private:
   int fd_;
-};
-
-// Ignores SIGPIPE while the script is written, so that a gnuplot that exits early (on an error)
-// shows up as EPIPE and is reported with its messages instead of killing rugosim.
-class IgnoreSigpipe {
- public:
-  IgnoreSigpipe() {
-    struct sigaction ignore {};
-    ignore.sa_handler = SIG_IGN;
-    sigemptyset(&ignore.sa_mask);
-    ::sigaction(SIGPIPE, &ignore, &previous_);
-  }
-  ~IgnoreSigpipe() { ::sigaction(SIGPIPE, &previous_, nullptr); }
-  IgnoreSigpipe(const IgnoreSigpipe&) = delete;
-  IgnoreSigpipe& operator=(const IgnoreSigpipe&) = delete;
-
- private:
-  struct sigaction previous_ {};
 };
 
 // Writes all of `text`; false when the reader went away (EPIPE) or another error occurred.
@@ -151,7 +135,9 @@ std::string run_gnuplot(std::string_view script, const std::string& output_path)
 
   bool written = false;
   {
-    const IgnoreSigpipe ignore_sigpipe;
+    // SIGPIPE ignored while the script is written, so that a gnuplot that exits early (on an
+    // error) shows up as EPIPE and is reported with its messages instead of killing rugosim.
+    const ScopedSignalHandler ignore_sigpipe(SIGPIPE, SIG_IGN);
     written = write_all(write_end.get(), script);
     write_end.reset();  // end of the script: gnuplot finishes the plot and exits
   }

@@ -10,19 +10,29 @@ extern "C" void on_sigint(int) {
   g_interrupted.store(true, std::memory_order_relaxed);
 }
 
+// Clears the flag before the handler is installed, so that only a SIGINT from now on counts;
+// returns SIGINT.
+int sigint_from_now() {
+  g_interrupted = false;
+  return SIGINT;
+}
+
 }  // namespace
 
-SigintGuard::SigintGuard() {
-  g_interrupted = false;
+ScopedSignalHandler::ScopedSignalHandler(int signal, void (*handler)(int)) : signal_(signal) {
   struct sigaction action {};
-  action.sa_handler = on_sigint;
+  action.sa_handler = handler;
   sigemptyset(&action.sa_mask);
-  ::sigaction(SIGINT, &action, &previous_);
+  ::sigaction(signal_, &action, &previous_);
 }
 
-SigintGuard::~SigintGuard() {
-  ::sigaction(SIGINT, &previous_, nullptr);
+ScopedSignalHandler::~ScopedSignalHandler() {
+  ::sigaction(signal_, &previous_, nullptr);
 }
+
+SigintGuard::SigintGuard() : handler_(sigint_from_now(), on_sigint) {}
+
+SigintGuard::~SigintGuard() = default;
 
 const std::atomic<bool>& SigintGuard::interrupted() {
   return g_interrupted;

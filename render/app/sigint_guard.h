@@ -8,6 +8,20 @@
 
 namespace rugosim::app {
 
+// While it lives, `handler` (a function, SIG_IGN or SIG_DFL) handles `signal`; the previous
+// disposition comes back when it ends.
+class ScopedSignalHandler {
+ public:
+  ScopedSignalHandler(int signal, void (*handler)(int));
+  ~ScopedSignalHandler();
+  ScopedSignalHandler(const ScopedSignalHandler&) = delete;
+  ScopedSignalHandler& operator=(const ScopedSignalHandler&) = delete;
+
+ private:
+  int signal_;
+  struct sigaction previous_ {};
+};
+
 class SigintGuard {
  public:
   SigintGuard();
@@ -19,7 +33,7 @@ class SigintGuard {
   static const std::atomic<bool>& interrupted();
 
  private:
-  struct sigaction previous_ {};
+  ScopedSignalHandler handler_;
 };
 
 }  // namespace rugosim::app

@@ -129,9 +129,7 @@ int run_simulate(const SimulateOptions& o) {
       c.bounds = bounds;
       c.state_hash = full_state_hash(world);
       c.world_state = world.save_state();
-      AtomicFile file(checkpoint_path(o.checkpoint_dir, frame));
-      file.write(encode_checkpoint(c));
-      file.commit();
+      write_text_atomically(checkpoint_path(o.checkpoint_dir, frame), encode_checkpoint(c));
     };
     // Every output is created before the run, so a bad path fails at once.
     BufferedOutput trajectory(o.trajectory_path);

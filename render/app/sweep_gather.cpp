@@ -221,11 +221,7 @@ int gather_sweep(const SweepSpec& spec, const std::string& dir, const std::strin
     return kExitFailure;
   }
   const std::string csv_path = dir + "/sweep.csv";
-  {
-    AtomicFile csv(csv_path);
-    csv.write(sweep_csv(spec, results));
-    csv.commit();
-  }
+  write_text_atomically(csv_path, sweep_csv(spec, results));
   fmt::print("wrote {} ({} tasks)\n", csv_path, results.size());
 
   const FigureFormat figure{format, 1000, 600};

@@ -2,14 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <numeric>
-#include <sstream>
 #include <stdexcept>
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include "render/app/atomic_file.h"
 #include "render/app/csv_reader.h"
 #include "render/app/sweep_expression.h"
 
@@ -53,12 +52,10 @@ double event_column(const EventRow& row, const std::string& column) {
 }
 
 nlohmann::json read_stats(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(fmt::format("{}: cannot read the task's stats", path));
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::optional<std::string> text = read_whole_file(path);
+  if (!text) throw std::runtime_error(fmt::format("{}: cannot read the task's stats", path));
   try {
-    return nlohmann::json::parse(text.str());
+    return nlohmann::json::parse(*text);
   } catch (const nlohmann::json::exception& e) {
     throw std::runtime_error(fmt::format("{}: not JSON ({})", path, e.what()));
   }

@@ -13,6 +13,7 @@
 #include "engine/core/hash.h"
 #include "engine/scene/json_reader.h"
 #include "engine/scene/scene_loader.h"
+#include "render/app/atomic_file.h"
 #include "render/app/sweep_expression.h"
 #include "render/app/sweep_spec_parts.h"
 
@@ -29,14 +30,6 @@ using sweep_spec_parts::read_measure;
 
 constexpr std::size_t kMostTasks = 1000000;
 constexpr std::size_t kMostValues = 100000;
-
-std::string read_file(const std::string& path, bool& ok) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  ok = in && !std::filesystem::is_directory(path);
-  if (ok) text << in.rdbuf();
-  return text.str();
-}
 
 // A whole number as a JSON integer (so that a seed or a count may come from an axis or an
 // expression, and 100 reads "100", not "100.0"); any other as a double.
@@ -314,13 +307,13 @@ SweepSpecLoad load_sweep_spec(const std::string& path) {
   SweepSpec& spec = load.spec;
   spec.file = path;
   Reader r(path, load.errors);
-  bool readable = false;
-  const std::string text = read_file(path, readable);
-  if (!readable) {
+  const std::optional<std::string> spec_text = read_whole_file(path);
+  if (!spec_text) {
     load.errors.push_back(
         {path, "", "cannot read the sweep spec (missing, a folder or unreadable)"});
     return load;
   }
+  const std::string& text = *spec_text;
   const std::optional<json> parsed = scene_json::parse_json_text(text, path, load.errors);
   if (!parsed || !r.is_object(*parsed, "")) return load;
   const json& root = *parsed;
@@ -343,9 +336,9 @@ SweepSpecLoad load_sweep_spec(const std::string& path) {
         (given.is_absolute() ? given : std::filesystem::path(path).parent_path() / given)
             .lexically_normal()
             .string();
-    bool ok = false;
-    scene_text = read_file(spec.scene_path, ok);
-    if (!ok) {
+    const std::optional<std::string> read = read_whole_file(spec.scene_path);
+    if (read) scene_text = *read;
+    if (!read) {
       r.error("/scene", fmt::format("cannot read the scene file \"{}\"", spec.scene_path));
     } else {
       std::vector<SceneError> scene_errors;

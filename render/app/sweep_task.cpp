@@ -4,8 +4,6 @@
 #include <chrono>
 #include <csignal>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <system_error>
 #include <unistd.h>
@@ -17,6 +15,7 @@
 #include "render/app/commands.h"
 #include "render/app/csv_reader.h"
 #include "render/app/scene_input.h"
+#include "render/app/sigint_guard.h"
 #include "render/app/sweep_expression.h"
 #include "render/app/sweep_measures.h"
 #include "render/app/task_index.h"
@@ -64,26 +63,6 @@ extern "C" void on_sigterm(int) {
   ::raise(SIGINT);
 }
 
-// While a task runs, SIGTERM (Slurm's scancel, a time limit, a preemption; Kubernetes stopping
-// a pod) stops it as Ctrl-C does: the command stops within its step and returns 130, and the
-// partial folder is removed. Before the command has installed its SIGINT handler, SIGINT ends
-// the process as SIGTERM would have.
-class SigtermAsSigint {
- public:
-  SigtermAsSigint() {
-    struct sigaction action {};
-    action.sa_handler = on_sigterm;
-    sigemptyset(&action.sa_mask);
-    ::sigaction(SIGTERM, &action, &previous_);
-  }
-  ~SigtermAsSigint() { ::sigaction(SIGTERM, &previous_, nullptr); }
-  SigtermAsSigint(const SigtermAsSigint&) = delete;
-  SigtermAsSigint& operator=(const SigtermAsSigint&) = delete;
-
- private:
-  struct sigaction previous_ {};
-};
-
 // Removes the partial folder unless the task completed.
 class PartialFolder {
  public:
@@ -106,12 +85,6 @@ class PartialFolder {
   std::string path_;
   bool kept_ = false;
 };
-
-void write_text(const std::string& path, const std::string& text) {
-  AtomicFile file(path);
-  file.write(text);
-  file.commit();
-}
 
 // The task's command, in `folder`; its exit code.
 int run_command(const SweepSpec& spec, const std::string& folder, int threads) {
@@ -170,12 +143,10 @@ std::string sweep_hash_text(std::uint64_t hash) {
 }
 
 std::optional<nlohmann::json> read_task_result(const std::string& dir, std::size_t task) {
-  std::ifstream in(task_folder(dir, task) + "/result.json");
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
+  const std::optional<std::string> text = read_whole_file(task_folder(dir, task) + "/result.json");
+  if (!text) return std::nullopt;
   try {
-    nlohmann::json result = nlohmann::json::parse(text.str());
+    nlohmann::json result = nlohmann::json::parse(*text);
     if (result.is_object()) return result;
   } catch (const nlohmann::json::exception&) {
   }
@@ -217,9 +188,13 @@ int run_sweep_task(const SweepSpec& spec, const std::string& dir, std::size_t ta
   remove_stale_partials(dir, task);
   PartialFolder partial(
       fmt::format("{}/{}{}-{}", dir, partial_prefix(task), host_name(), ::getpid()));
-  write_text(partial.path() + "/scene.json", scene.dump(2) + "\n");
+  write_text_atomically(partial.path() + "/scene.json", scene.dump(2) + "\n");
   const auto start = std::chrono::steady_clock::now();
-  const SigtermAsSigint sigterm;
+  // While the task runs, SIGTERM (Slurm's scancel, a time limit, a preemption; Kubernetes
+  // stopping a pod) stops it as Ctrl-C does: the command stops within its step and returns 130,
+  // and the partial folder is removed. Before the command has installed its SIGINT handler,
+  // SIGINT ends the process as SIGTERM would have.
+  const ScopedSignalHandler sigterm(SIGTERM, on_sigterm);
   const int code = run_command(spec, partial.path(), threads);
   const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -241,7 +216,7 @@ int run_sweep_task(const SweepSpec& spec, const std::string& dir, std::size_t ta
     measures[spec.measures[m].name] = values[m] ? nlohmann::json(*values[m]) : nlohmann::json();
   result["axes"] = axes;
   result["measures"] = measures;
-  write_text(partial.path() + "/result.json", result.dump(2) + "\n");
+  write_text_atomically(partial.path() + "/result.json", result.dump(2) + "\n");
 
   // Complete: the rename makes it visible at once. Another run of the same task may have won
   // the race (a resubmitted array task): then its result stands.
