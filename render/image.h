@@ -6,12 +6,16 @@
 #include <cstdint>
 #include <vector>
 
+#include "render/huge_page_allocator.h"
+
 namespace rugosim {
 
 struct Image {
-  int width = 0;                   // px
-  int height = 0;                  // px
-  std::vector<std::uint8_t> rgba;  // width × height × 4 bytes, row-major, top row first
+  int width = 0;   // px
+  int height = 0;  // px
+  // width × height × 4 bytes, row-major, top row first; a large frame in huge pages, which
+  // a short render (a chunk) first touches far faster (huge_page_allocator.h)
+  std::vector<std::uint8_t, HugePageAllocator<std::uint8_t>> rgba;
   // Which picture the pixels are, where their maker knows it: images with the same non-zero
   // value have the same pixels (SceneRenderer numbers its pictures from a counter of the whole
   // process), 0 means unknown. Whoever changes the pixels must set it to 0. It lets a renderer
