@@ -11,16 +11,28 @@
 // H is the frame height (16:9): 720 by default; 2160 (4K) with
 // --benchmark_filter=chunk/.*/2160 (minutes per repetition). The ratio chunk/baseline is the
 // chunk's overhead; the issue asks for at most 1.05 at 4K.
+//
+// What a process pays to first write fresh memory, the largest part of a 4K chunk's fixed cost
+// (a 4K render touches 330 MB before its first frame, 1.7 GB once x264's lookahead is full):
+//   fresh_memory/baseline/MB     writing MB megabytes already written once (cache and bus only)
+//   fresh_memory/4k_pages/MB     writing a fresh mapping of 4 KB pages (a fault per page)
+//   fresh_memory/huge_pages/MB   writing a buffer of huge_page_allocator.h, as frames now are
+// On a virtual machine that hands freed memory back to its host the fresh runs cost far more
+// than on a physical one (docs/scale-out.md).
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <string>
+#include <sys/mman.h>
 #include <unistd.h>
+#include <utility>
 
 #include <benchmark/benchmark.h>
 #include <fmt/core.h>
 
 #include "ratio_reporter.h"
+#include "render/huge_page_allocator.h"
 
 namespace rugosim {
 namespace {
@@ -81,7 +93,52 @@ void own_process(benchmark::State& state) {
   }
 }
 
+std::size_t megabytes(const benchmark::State& state) {
+  return static_cast<std::size_t>(state.range(0)) << 20;
+}
+
+void rewrite_memory(benchmark::State& state) {
+  const std::size_t bytes = megabytes(state);
+  void* buffer = huge_pages::allocate(bytes);
+  std::memset(buffer, 1, bytes);
+  for (auto _ : state) {
+    std::memset(buffer, 2, bytes);
+    benchmark::ClobberMemory();
+  }
+  huge_pages::deallocate(buffer, bytes);
+}
+
+void fresh_small_pages(benchmark::State& state) {
+  const std::size_t bytes = megabytes(state);
+  for (auto _ : state) {
+    void* buffer =
+        ::mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (buffer == MAP_FAILED) state.SkipWithError("mmap failed");
+    ::madvise(buffer, bytes, MADV_NOHUGEPAGE);  // 4 KB pages whatever the THP mode
+    std::memset(buffer, 2, bytes);
+    benchmark::ClobberMemory();
+    ::munmap(buffer, bytes);
+  }
+}
+
+void fresh_huge_pages(benchmark::State& state) {
+  const std::size_t bytes = megabytes(state);
+  for (auto _ : state) {
+    void* buffer = huge_pages::allocate(bytes);
+    std::memset(buffer, 2, bytes);
+    benchmark::ClobberMemory();
+    huge_pages::deallocate(buffer, bytes);
+  }
+}
+
 void register_all() {
+  using Run = void (*)(benchmark::State&);
+  const std::pair<const char*, Run> memory_runs[] = {{"fresh_memory/baseline", rewrite_memory},
+                                                     {"fresh_memory/4k_pages", fresh_small_pages},
+                                                     {"fresh_memory/huge_pages", fresh_huge_pages}};
+  for (const auto& [name, run] : memory_runs) {
+    benchmark::RegisterBenchmark(name, run)->Arg(330)->Iterations(5)->Unit(benchmark::kMillisecond);
+  }
   for (const int height : {720, 2160}) {
     benchmark::RegisterBenchmark("chunk/baseline", inside_single_render)
         ->Arg(height)
