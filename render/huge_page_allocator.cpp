@@ -7,6 +7,7 @@
 #endif
 
 namespace rugosim::huge_pages {
+#if defined(RUGOSIM_HUGE_PAGE_MAPPINGS)
 namespace {
 
 std::size_t round_up(std::size_t bytes) {
@@ -14,6 +15,7 @@ std::size_t round_up(std::size_t bytes) {
 }
 
 }  // namespace
+#endif
 
 void* allocate(std::size_t bytes) {
 #if defined(RUGOSIM_HUGE_PAGE_MAPPINGS)
@@ -38,7 +40,7 @@ void* allocate(std::size_t bytes) {
   return ::operator new(bytes);
 }
 
-void deallocate(void* pointer, std::size_t bytes) {
+void deallocate(void* pointer, [[maybe_unused]] std::size_t bytes) {
   if (pointer == nullptr) return;
 #if defined(RUGOSIM_HUGE_PAGE_MAPPINGS)
   if (bytes >= kHugePageMinimum) {
