@@ -29,9 +29,9 @@ void* allocate(std::size_t bytes) {
     const auto start = reinterpret_cast<std::uintptr_t>(mapped);
     const std::uintptr_t aligned = (start + kHugePage - 1) & ~(std::uintptr_t{kHugePage} - 1);
     if (aligned > start) ::munmap(mapped, aligned - start);
+    // aligned - start < kHugePage, so a tail is always left over.
     const std::uintptr_t end = start + length + kHugePage;
-    if (end > aligned + length)
-      ::munmap(reinterpret_cast<void*>(aligned + length), end - (aligned + length));
+    ::munmap(reinterpret_cast<void*>(aligned + length), end - (aligned + length));
     // Advice only: refused (THP "never", an old kernel), the buffer is an ordinary mapping.
     ::madvise(reinterpret_cast<void*>(aligned), length, MADV_HUGEPAGE);
     return reinterpret_cast<void*>(aligned);

@@ -3,10 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <set>
-#include <sstream>
 
 #include <fmt/core.h>
 
@@ -336,11 +334,11 @@ SweepSpecLoad load_sweep_spec(const std::string& path) {
         (given.is_absolute() ? given : std::filesystem::path(path).parent_path() / given)
             .lexically_normal()
             .string();
-    const std::optional<std::string> read = read_whole_file(spec.scene_path);
-    if (read) scene_text = *read;
+    std::optional<std::string> read = read_whole_file(spec.scene_path);
     if (!read) {
       r.error("/scene", fmt::format("cannot read the scene file \"{}\"", spec.scene_path));
     } else {
+      scene_text = std::move(*read);
       std::vector<SceneError> scene_errors;
       const std::optional<json> scene =
           scene_json::parse_json_text(scene_text, spec.scene_path, scene_errors);
