@@ -1,37 +1,19 @@
-// An output file written atomically: the text goes to a temporary file beside the target,
-// which replaces the target only on commit(). A run that fails or is abandoned leaves the
-// target as it was (no partial or truncated output) and removes the temporary file. A target
-// that exists and is not a regular file (a device, a pipe) is written directly.
+// Output files written whole or not at all: the app's text outputs (AtomicFile) and files that an
+// encoder fills under a temporary name (RenamedFile).
 #pragma once
 
-#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
 
+#include "render/sinks/atomic_output_file.h"
+
 namespace rugosim::app {
 
-class AtomicFile {
- public:
-  // Opens "<path>.tmp-<pid>" for writing; throws std::runtime_error naming the path and the
-  // system's reason when it cannot.
-  explicit AtomicFile(std::string path);
-  ~AtomicFile();
-  AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
-
-  // Appends text; throws std::runtime_error on a write error (e.g. a full disk).
-  void write(std::string_view text);
-  // Flushes, closes and renames over the target; throws std::runtime_error on failure.
-  void commit();
-
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-  std::string temporary_;
-  std::FILE* file_ = nullptr;
-};
+// The app's text outputs (CSV, stats, checkpoints, sweep files) are written like the sinks'
+// frames, through the render library's AtomicOutputFile (render/sinks/atomic_output_file.h):
+// whole or not at all, flushed to disk before they replace the target.
+using AtomicFile = AtomicOutputFile;
 
 // A file that another writer (an encoder) fills under a temporary name beside `path`, renamed
 // to `path` on commit(); without commit (an error, an interruption) the temporary file is
@@ -53,8 +35,8 @@ class RenamedFile {
   bool committed_ = false;
 };
 
-// `text` written to `path` through an AtomicFile: whole or not at all. Throws as AtomicFile does.
-// (Binary files of the sinks: png_io.h's write_file_atomically.)
+// `text` written to `path` through an AtomicFile: whole or not at all. Throws SinkError
+// (a std::runtime_error) naming the path.
 void write_text_atomically(const std::string& path, std::string_view text);
 
 // Every byte of the file at `path`; nullopt when it is missing, a folder or cannot be read.

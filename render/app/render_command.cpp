@@ -33,6 +33,7 @@
 #include "render/app/sigint_guard.h"
 #include "render/draw/scene_renderer.h"
 #include "render/gl/gl_context.h"
+#include "render/sinks/atomic_output_file.h"
 #include "render/sinks/encoded_clip_sink.h"
 #include "render/sinks/film_strip.h"
 #include "render/sinks/mp4_join.h"
@@ -484,7 +485,7 @@ int write_vector(const RenderOptions& o, const Plan& plan, LoadedScene& loaded) 
   } catch (const std::runtime_error& e) {
     throw SinkError(fmt::format("{}: {}", o.output, e.what()));
   }
-  write_file_atomically(o.output, bytes);
+  write_file_atomically(o.output, bytes, AtomicOutputFile::Flush::kRenameOnly);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   fmt::print(stderr, "done: 1 frame written to {} in {:.3g} s ({} KB, vector)\n", o.output, seconds,

@@ -6,7 +6,6 @@
 #include "render/sinks/png_io.h"
 
 #include <array>
-#include <atomic>
 #include <cerrno>
 #include <csetjmp>
 #include <cstddef>
@@ -20,6 +19,8 @@
 #include <zlib.h>
 
 #include <png.h>
+
+#include "render/sinks/atomic_output_file.h"
 
 namespace rugosim {
 namespace {
@@ -219,36 +220,6 @@ PngReadError read_error(std::string_view name, const ReadJob& job) {
 
 // ---- Files ----
 
-SinkError file_error(const std::string& path, const char* what, int error_number) {
-  return SinkError(
-      std::string(path).append(": ").append(what).append(": ").append(std::strerror(error_number)));
-}
-
-// write(2) until everything is written; false with errno set on failure.
-bool write_all(int fd, const std::uint8_t* data, std::size_t size) {
-  while (size > 0) {
-    const ssize_t written = ::write(fd, data, size);
-    if (written < 0) {
-      if (errno == EINTR) continue;
-      return false;
-    }
-    data += written;
-    size -= static_cast<std::size_t>(written);
-  }
-  return true;
-}
-
-// Temporary names are unique per process and call, so that threads writing the same target
-// never share one.
-std::string temporary_name(const std::string& path) {
-  static std::atomic<unsigned long> counter{0};
-  return std::string(path)
-      .append(".tmp-")
-      .append(std::to_string(::getpid()))
-      .append("-")
-      .append(std::to_string(counter.fetch_add(1)));
-}
-
 PngReadError read_file_error(const std::string& path, const char* what, int error_number) {
   return PngReadError(
       std::string(path).append(": ").append(what).append(": ").append(std::strerror(error_number)));
@@ -263,34 +234,6 @@ struct FileCloser {
   FileCloser(const FileCloser&) = delete;
   FileCloser& operator=(const FileCloser&) = delete;
 };
-
-// The file to replace by a rename for a write to `path`: `path` itself, or the file a symbolic
-// link points to (the link stays); empty when `path` must be written directly: it exists and
-// is not a regular file (a device, a FIFO), or it is under /dev or /proc, where /dev/stdout or
-// /proc/self/fd/1 may lead to a regular file that must not be replaced.
-std::string replace_target(const std::string& path) {
-  struct stat status {};
-  if (::stat(path.c_str(), &status) != 0) return path;  // a new file (or an error on create)
-  if (!S_ISREG(status.st_mode) || path.rfind("/dev/", 0) == 0 || path.rfind("/proc/", 0) == 0) {
-    return {};
-  }
-  struct stat link_status {};
-  if (::lstat(path.c_str(), &link_status) != 0 || !S_ISLNK(link_status.st_mode)) return path;
-  const std::unique_ptr<char, decltype(&std::free)> resolved(::realpath(path.c_str(), nullptr),
-                                                             &std::free);
-  if (resolved == nullptr) throw file_error(path, "cannot resolve the link", errno);
-  return std::string(resolved.get());
-}
-
-void write_directly(const std::string& path, const std::vector<std::uint8_t>& bytes) {
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
-  if (fd < 0) throw file_error(path, "cannot open", errno);
-  const bool written = write_all(fd, bytes.data(), bytes.size());
-  const int write_error = errno;
-  const bool closed = ::close(fd) == 0;
-  if (!written) throw file_error(path, "cannot write", write_error);
-  if (!closed) throw file_error(path, "cannot write", errno);
-}
 
 }  // namespace
 
@@ -325,31 +268,7 @@ void write_png_file(const std::string& path, const Image& image, const PngSettin
   } catch (const std::runtime_error& error) {
     throw SinkError(std::string(path).append(": ").append(error.what()));
   }
-  write_file_atomically(path, bytes);
-}
-
-void write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& bytes) {
-  const std::string target = replace_target(path);
-  if (target.empty()) {
-    write_directly(path, bytes);
-    return;
-  }
-  const std::string temporary = temporary_name(target);
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) throw file_error(path, "cannot create", errno);
-  const bool written = write_all(fd, bytes.data(), bytes.size());
-  int error_number = errno;
-  const bool closed = ::close(fd) == 0;
-  if (written && !closed) error_number = errno;
-  if (!written || !closed) {
-    ::unlink(temporary.c_str());
-    throw file_error(path, "cannot write", error_number);
-  }
-  if (::rename(temporary.c_str(), target.c_str()) != 0) {
-    error_number = errno;
-    ::unlink(temporary.c_str());
-    throw file_error(path, "cannot replace", error_number);
-  }
+  write_file_atomically(path, bytes, AtomicOutputFile::Flush::kRenameOnly);
 }
 
 Image decode_png(std::span<const std::uint8_t> bytes, std::string_view name) {

@@ -48,18 +48,14 @@ class PngReadError : public std::runtime_error {
 // fails (out of memory).
 std::vector<std::uint8_t> encode_png(const Image& image, const PngSettings& settings);
 
-// Encodes `image` and writes it to `path` atomically: to a temporary file beside it, renamed
-// over `path` once complete, so that an interrupted run never leaves a truncated PNG (the
-// temporary file is removed on failure; a symbolic link is kept and its target replaced). An
-// existing `path` that is not a regular file (a device, a FIFO), or any path under /dev or
-// /proc (/dev/stdout, /dev/full), is written directly. No fsync: the rename protects against
-// the process stopping, not against the machine losing power, which would cost a disk flush
-// per frame. Throws SinkError("<path>: <what failed>: <system reason>"), and
-// std::invalid_argument as encode_png.
+// Encodes `image` and writes it to `path` atomically (atomic_output_file.h): to a temporary file
+// beside it, renamed over `path` once complete, so that an interrupted run never leaves a truncated
+// PNG (the temporary file is removed on failure; a symbolic link is kept and its target replaced).
+// An existing `path` that is not a regular file (a device, a FIFO), or any path under /dev or /proc
+// (/dev/stdout, /dev/full), is written directly. No fsync: the rename protects against the process
+// stopping, not against the machine losing power, which would cost a disk flush per frame. Throws
+// SinkError("<path>: <what failed>: <system reason>"), and std::invalid_argument as encode_png.
 void write_png_file(const std::string& path, const Image& image, const PngSettings& settings);
-// Writes `bytes` to `path` as write_png_file does: through a temporary file renamed over it
-// (a device or FIFO is written directly). Throws SinkError naming the path.
-void write_file_atomically(const std::string& path, const std::vector<std::uint8_t>& bytes);
 
 // Any PNG (gray, gray + alpha, palette, RGB, RGBA; 1 to 16 bits per sample; tRNS transparency;
 // interlaced or not) as RGBA8: samples are taken as stored (no gamma or colour-space

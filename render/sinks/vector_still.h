@@ -18,7 +18,7 @@ namespace rugosim {
 
 enum class VectorFormat { kSvg, kPdf };
 
-// The still's file, in memory (written with write_file_atomically, png_io.h). Throws
+// The still's file, in memory (written with write_file_atomically, atomic_output_file.h). Throws
 // std::runtime_error with cairo's reason when it cannot be made, and the font's error when
 // text is asked for and the font cannot be opened.
 std::vector<std::uint8_t> make_vector_still(VectorFormat format, const std::vector<BodyLook>& looks,

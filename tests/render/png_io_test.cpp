@@ -19,6 +19,8 @@
 #include <gtest/gtest.h>
 #include <png.h>
 
+#include "support/scratch_directory.h"
+
 namespace rugosim {
 namespace {
 
@@ -43,39 +45,7 @@ Image random_image(int width, int height, bool opaque, std::mt19937& rng) {
   return image;
 }
 
-// A fresh empty directory under the system's temporary directory, removed afterwards.
-class TemporaryDirectory {
- public:
-  TemporaryDirectory() {
-    const std::string name = std::string("rugosim_png_io_test_")
-                                 .append(std::to_string(::getpid()))
-                                 .append("_")
-                                 .append(std::to_string(counter_++));
-    path_ = fs::temp_directory_path() / name;
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TemporaryDirectory() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  TemporaryDirectory(const TemporaryDirectory&) = delete;
-  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
-
-  const fs::path& path() const { return path_; }
-  std::vector<std::string> listing() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(path_)) {
-      names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  static inline int counter_ = 0;
-  fs::path path_;
-};
+using testing::ScratchDirectory;
 
 void write_bytes(const fs::path& path, const std::vector<std::uint8_t>& bytes) {
   std::ofstream out(path, std::ios::binary);
@@ -443,7 +413,7 @@ TEST(PngDecode, PaletteWithPartialTransparency) {
 }
 
 TEST(PngReadErrors, NameTheFileAndWhatIsWrong) {
-  const TemporaryDirectory directory;
+  const ScratchDirectory directory("rugosim_png_io_test");
   const std::string missing = (directory.path() / "missing.png").string();
   std::string message = read_error_message(missing);
   EXPECT_NE(message.find(missing), std::string::npos) << message;
@@ -487,7 +457,7 @@ TEST(PngReadErrors, EveryTruncationIsReported) {
     }
   }
   // And through a file.
-  const TemporaryDirectory directory;
+  const ScratchDirectory directory("rugosim_png_io_test");
   const std::string path = (directory.path() / "cut.png").string();
   write_bytes(path, std::vector<std::uint8_t>(png.begin(), png.begin() + 40));
   const std::string message = read_error_message(path);
@@ -523,7 +493,7 @@ TEST(PngWriteFile, DevFullReportsNoSpace) {
 }
 
 TEST(PngWriteFile, AtomicWriteLeavesOnlyTheFile) {
-  const TemporaryDirectory directory;
+  const ScratchDirectory directory("rugosim_png_io_test");
   std::mt19937 rng(18);
   const Image first = random_image(40, 30, true, rng);
   const Image second = random_image(20, 10, true, rng);
@@ -545,7 +515,7 @@ TEST(PngWriteFile, AtomicWriteLeavesOnlyTheFile) {
 }
 
 TEST(PngWriteFile, FailedWriteRemovesTheTemporaryFileAndKeepsTheOldOne) {
-  const TemporaryDirectory directory;
+  const ScratchDirectory directory("rugosim_png_io_test");
   std::mt19937 rng(19);
   const std::string path = (directory.path() / "frame.png").string();
   const Image old_image = random_image(8, 8, true, rng);

@@ -7,49 +7,23 @@
 #include <random>
 #include <stdexcept>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "render/sinks/png_io.h"
+#include "support/scratch_directory.h"
 
 namespace rugosim {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ScratchDirectory {
+// The shared scratch directory, with the sink's file pattern inside it.
+class ScratchDirectory : public testing::ScratchDirectory {
  public:
-  ScratchDirectory() {
-    path_ = fs::temp_directory_path() / std::string("rugosim_png_sequence_test_")
-                                            .append(std::to_string(::getpid()))
-                                            .append("_")
-                                            .append(std::to_string(counter_++));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~ScratchDirectory() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  ScratchDirectory(const ScratchDirectory&) = delete;
-  ScratchDirectory& operator=(const ScratchDirectory&) = delete;
-
-  const fs::path& path() const { return path_; }
-  std::string pattern(const std::string& name) const { return (path_ / name).string(); }
-  std::vector<std::string> listing() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(path_)) {
-      names.push_back(entry.path().filename().string());
-    }
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-
- private:
-  static inline int counter_ = 0;
-  fs::path path_;
+  ScratchDirectory() : testing::ScratchDirectory("rugosim_png_sequence_test") {}
+  std::string pattern(const std::string& name) const { return (path() / name).string(); }
 };
 
 // An opaque frame that differs from frame to frame: a background colour from the index and a
