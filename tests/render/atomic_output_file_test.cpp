@@ -15,7 +15,7 @@
 
 #include "render/sinks/frame_sink.h"
 #include "support/file_size_limit.h"
-#include "support/scratch_directory.h"
+#include "support/scratch_dir.h"
 
 namespace {
 
@@ -24,7 +24,7 @@ using rugosim::AtomicOutputFile;
 using rugosim::SinkError;
 using rugosim::write_file_atomically;
 using rugosim::testing::FileSizeLimit;
-using rugosim::testing::ScratchDirectory;
+using rugosim::testing::ScratchDir;
 
 std::string contents(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -38,7 +38,7 @@ const AtomicOutputFile::Flush kBothFlushes[] = {AtomicOutputFile::Flush::kToDisk
 
 TEST(AtomicOutputFile, TheTargetAppearsWholeOnlyAtCommit) {
   for (const AtomicOutputFile::Flush flush : kBothFlushes) {
-    const ScratchDirectory directory("rugosim_atomic_output_test");
+    const ScratchDir directory("atomic_output_test");
     const fs::path path = directory.path() / "table.csv";
     { std::ofstream(path) << "old\n"; }
     AtomicOutputFile file(path.string(), flush);
@@ -58,7 +58,7 @@ TEST(AtomicOutputFile, TheTargetAppearsWholeOnlyAtCommit) {
 }
 
 TEST(AtomicOutputFile, AnAbandonedWriterLeavesTheTargetAsItWas) {
-  const ScratchDirectory directory("rugosim_atomic_output_test");
+  const ScratchDir directory("atomic_output_test");
   const fs::path kept = directory.path() / "stats.json";
   { std::ofstream(kept) << "{}\n"; }
   {
@@ -75,7 +75,7 @@ TEST(AtomicOutputFile, AnAbandonedWriterLeavesTheTargetAsItWas) {
 }
 
 TEST(AtomicOutputFile, ALinkKeepsPointingAtTheReplacedFile) {
-  const ScratchDirectory directory("rugosim_atomic_output_test");
+  const ScratchDir directory("atomic_output_test");
   const fs::path real = directory.path() / "run_42.csv";
   const fs::path link = directory.path() / "latest.csv";
   { std::ofstream(real) << "old\n"; }
@@ -89,7 +89,7 @@ TEST(AtomicOutputFile, ALinkKeepsPointingAtTheReplacedFile) {
 TEST(AtomicOutputFile, DevicesAndPipesAreWrittenDirectly) {
   // /dev/null exists and is not a regular file: no temporary file beside it, no rename.
   write_file_atomically("/dev/null", std::vector<std::uint8_t>(1000, 7));
-  const ScratchDirectory directory("rugosim_atomic_output_test");
+  const ScratchDir directory("atomic_output_test");
   const fs::path fifo = directory.path() / "pipe";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   // A reader on the other end (opened non-blocking first, so that the writer's open returns).
@@ -104,7 +104,7 @@ TEST(AtomicOutputFile, DevicesAndPipesAreWrittenDirectly) {
 }
 
 TEST(AtomicOutputFile, FailuresNameThePathAndLeaveNothingBehind) {
-  const ScratchDirectory directory("rugosim_atomic_output_test");
+  const ScratchDir directory("atomic_output_test");
   const fs::path path = directory.path() / "big.bin";
   { std::ofstream(path) << "old\n"; }
   std::mt19937 rng(7);

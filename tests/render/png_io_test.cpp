@@ -19,7 +19,7 @@
 #include <gtest/gtest.h>
 #include <png.h>
 
-#include "support/scratch_directory.h"
+#include "support/scratch_dir.h"
 
 namespace rugosim {
 namespace {
@@ -45,7 +45,7 @@ Image random_image(int width, int height, bool opaque, std::mt19937& rng) {
   return image;
 }
 
-using testing::ScratchDirectory;
+using testing::ScratchDir;
 
 void write_bytes(const fs::path& path, const std::vector<std::uint8_t>& bytes) {
   std::ofstream out(path, std::ios::binary);
@@ -413,7 +413,7 @@ TEST(PngDecode, PaletteWithPartialTransparency) {
 }
 
 TEST(PngReadErrors, NameTheFileAndWhatIsWrong) {
-  const ScratchDirectory directory("rugosim_png_io_test");
+  const ScratchDir directory("png_io_test");
   const std::string missing = (directory.path() / "missing.png").string();
   std::string message = read_error_message(missing);
   EXPECT_NE(message.find(missing), std::string::npos) << message;
@@ -457,7 +457,7 @@ TEST(PngReadErrors, EveryTruncationIsReported) {
     }
   }
   // And through a file.
-  const ScratchDirectory directory("rugosim_png_io_test");
+  const ScratchDir directory("png_io_test");
   const std::string path = (directory.path() / "cut.png").string();
   write_bytes(path, std::vector<std::uint8_t>(png.begin(), png.begin() + 40));
   const std::string message = read_error_message(path);
@@ -493,7 +493,7 @@ TEST(PngWriteFile, DevFullReportsNoSpace) {
 }
 
 TEST(PngWriteFile, AtomicWriteLeavesOnlyTheFile) {
-  const ScratchDirectory directory("rugosim_png_io_test");
+  const ScratchDir directory("png_io_test");
   std::mt19937 rng(18);
   const Image first = random_image(40, 30, true, rng);
   const Image second = random_image(20, 10, true, rng);
@@ -515,7 +515,7 @@ TEST(PngWriteFile, AtomicWriteLeavesOnlyTheFile) {
 }
 
 TEST(PngWriteFile, FailedWriteRemovesTheTemporaryFileAndKeepsTheOldOne) {
-  const ScratchDirectory directory("rugosim_png_io_test");
+  const ScratchDir directory("png_io_test");
   std::mt19937 rng(19);
   const std::string path = (directory.path() / "frame.png").string();
   const Image old_image = random_image(8, 8, true, rng);

@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "render/sinks/png_io.h"
-#include "support/scratch_directory.h"
+#include "support/scratch_dir.h"
 
 namespace rugosim {
 namespace {
@@ -20,9 +20,9 @@ namespace {
 namespace fs = std::filesystem;
 
 // The shared scratch directory, with the sink's file pattern inside it.
-class ScratchDirectory : public testing::ScratchDirectory {
+class ScratchDirectory : public testing::ScratchDir {
  public:
-  ScratchDirectory() : testing::ScratchDirectory("rugosim_png_sequence_test") {}
+  ScratchDirectory() : testing::ScratchDir("png_sequence_test") {}
   std::string pattern(const std::string& name) const { return (path() / name).string(); }
 };
 

@@ -12,6 +12,8 @@
 #include <system_error>
 #include <unistd.h>
 
+#include "support/scratch_dir.h"
+
 namespace rugosim::testing {
 
 inline std::filesystem::path source_dir() {
@@ -23,29 +25,6 @@ inline std::string program() {
   const char* p = std::getenv("RUGOSIM_PROGRAM");
   return p != nullptr ? p : "rugosim";
 }
-
-// A fresh, empty folder of the test's own under the temporary directory (named with the
-// process id, so that parallel test programs never share one), removed with everything in it
-// when the scratch goes.
-class ScratchDir {
- public:
-  explicit ScratchDir(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() /
-              ("rugosim_" + name + "_" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ScratchDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 // A shell command line run to its end, stdout discarded.
 struct CommandRun {
