@@ -15,7 +15,8 @@
 //
 // pile/normal_micro_collisions_* is normal as it was before the presets rested contacts at
 // mid-step (mid_step_rest 0, rest_stride 1: resting contact by the paper's micro-collisions
-// alone): what mid-step rest and the rest steps it allows save.
+// alone): what mid-step rest and the rest steps it allows save. pile/normal_soft_rest_* is
+// normal with the soft resting solve (the soft_rest knob, 8 substeps, and its stricter sleep).
 //
 // Counters: wall_per_sim_s; ns_per_body_step, the wall time per awake body and step (how cost
 // grows with the work); detection_s, the collision detection's share (World::profile); asleep_at,
@@ -62,11 +63,14 @@ struct RugosimRun {
   bool sleeping = true;
   int rest_stride = 0;     // 0: the preset's
   int mid_step_rest = -1;  // -1: the preset's
+  int soft_rest = 0;       // the soft_rest knob (soft_rest.h) over the preset's 0
 };
 
 void pile_rugosim(benchmark::State& state, const RugosimRun& run) {
   const std::vector<testing::PileBody> scene = testing::pile_scene(spec_for(state.range(0)));
-  WorldSettings settings = with_accuracy(WorldSettings{}, *accuracy_preset(run.preset));
+  Accuracy accuracy = *accuracy_preset(run.preset);
+  accuracy.soft_rest = run.soft_rest;
+  WorldSettings settings = with_accuracy(WorldSettings{}, accuracy);
   settings.sleep.enabled = run.sleeping;
   if (run.rest_stride > 0) settings.rest_stride = run.rest_stride;
   if (run.mid_step_rest >= 0) settings.mid_step_rest = run.mid_step_rest != 0;
@@ -190,6 +194,19 @@ void register_all() {
             std::to_string(threads) + (threads == 1 ? "_thread" : "_threads");
         const RugosimRun run{"normal", threads, true, 1, 0};
         add("pile/normal_micro_collisions_" + suffix, n, repetitions,
+            [run](benchmark::State& s) { pile_rugosim(s, run); });
+        if (cpus == 1) break;
+      }
+    }
+    // The soft resting solve (the soft_rest knob, 8 substeps): piles that come to rest within
+    // half a band and sleep by the stricter test that goes with it.
+    if (n <= 200) {
+      for (const int threads : {1, cpus}) {
+        const std::string suffix =
+            std::to_string(threads) + (threads == 1 ? "_thread" : "_threads");
+        RugosimRun run{"normal", threads, true};
+        run.soft_rest = 8;
+        add("pile/normal_soft_rest_" + suffix, n, repetitions,
             [run](benchmark::State& s) { pile_rugosim(s, run); });
         if (cpus == 1) break;
       }

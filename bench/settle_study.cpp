@@ -68,15 +68,14 @@ std::unique_ptr<World> make_world(const Options& o) {
   spec.bodies = o.pile;
   spec.seed = o.seed;
   const std::string preset = o.accuracy.preset.value_or("normal");
-  const std::optional<Accuracy> accuracy = accuracy_preset(preset);
+  std::optional<Accuracy> accuracy = accuracy_preset(preset);
   if (!accuracy) {
     fmt::print(stderr, "error: no accuracy preset \"{}\"\n", preset);
     return nullptr;
   }
-  if (!o.accuracy.knobs.empty()) {
-    fmt::print(stderr, "error: knob options apply to a scene file; --pile takes --accuracy\n");
-    return nullptr;
-  }
+  // Knob options override the preset, as they do a scene's.
+  for (const auto& [key, value] : o.accuracy.knobs)
+    find_accuracy_knob(key)->set(*accuracy, value);
   WorldSettings settings = with_accuracy(WorldSettings{}, *accuracy);
   settings.threads = o.threads;
   settings.sleep.enabled = o.sleep == "on";

@@ -45,6 +45,16 @@ const std::vector<AccuracyKnob>& accuracy_knobs() {
        true, 0, false, 1, nullptr, &Accuracy::converging_contacts},
       {"rest_sweeps", "", "Gauss-Seidel sweeps of each mid-step solve at most", true, 1, false,
        100000, nullptr, &Accuracy::rest_sweeps},
+      {"soft_rest", "",
+       "substeps of the soft resting solve with warm starts (piles rest and sleep); 0: the "
+       "mid-step solve",
+       true, 0, false, 64, nullptr, &Accuracy::soft_rest},
+      {"soft_rest_hertz", "Hz", "the soft resting solve's contact spring", false, 0.0, true, 1e6,
+       &Accuracy::soft_rest_hertz, nullptr},
+      {"soft_rest_island", "",
+       "the soft resting solve takes islands of at least this many moving bodies in contact; "
+       "smaller ones keep the mid-step solve",
+       true, 1, false, 1000000, nullptr, &Accuracy::soft_rest_island},
       {"toi_tolerance", "s", "time-of-impact bisection stops at this step", false, 0.0, true, 1.0,
        &Accuracy::toi_tolerance, nullptr},
       {"max_bisections", "", "bisections of one step at most", true, 1, false, 200, nullptr,
@@ -126,11 +136,26 @@ WorldSettings with_accuracy(WorldSettings base, const Accuracy& accuracy) {
                                 " s) must not exceed max_step (" + number_text(accuracy.max_step) +
                                 " s)");
   }
+  if (accuracy.soft_rest > 0 && accuracy.mid_step_rest == 0) {
+    throw std::invalid_argument(
+        "accuracy: soft_rest replaces the mid-step solve, so it needs mid_step_rest 1");
+  }
   base.max_step = accuracy.max_step;
   base.rest_stride = accuracy.rest_stride;
   base.mid_step_rest = accuracy.mid_step_rest != 0;
   base.converging_contacts = accuracy.converging_contacts != 0;
   base.rest_sweeps = accuracy.rest_sweeps;
+  base.soft_rest_substeps = accuracy.soft_rest;
+  base.soft_rest_hertz = accuracy.soft_rest_hertz;
+  base.soft_rest_island = accuracy.soft_rest_island;
+  if (accuracy.soft_rest > 0) {
+    // The soft solve leaves a pile within half a band of where it settled, so a body must stay
+    // that still, within 0.1% of its radius, for a second before it sleeps. Under the looser
+    // test (two bands, 1%, half a second) the 50-body pile slept while still compacting.
+    base.sleep.time = 1.0;
+    base.sleep.bands = 0.5;
+    base.sleep.tolerance = 0.001;
+  }
   base.min_step = accuracy.toi_tolerance;
   base.max_bisections = accuracy.max_bisections;
   base.max_resolution_passes = accuracy.contact_passes;

@@ -69,7 +69,9 @@ ContactPlan plan_contact(const ContactBodyState& state_a, const ContactBodyState
   p.mu = k.mu;
   p.approaching = p.vn < -k.resolved_speed;
   const double g_n = k.pressing;
-  if (g_n > 0.0 && k.delta > 0.0 && p.vn < 0.0 && p.vn > -impact_speed(k)) {
+  if (p.vn < 0.0 && p.vn > -k.inelastic_below) {
+    p.restitution = 0.0;
+  } else if (g_n > 0.0 && k.delta > 0.0 && p.vn < 0.0 && p.vn > -impact_speed(k)) {
     p.micro = true;
     p.vn_target = std::min(p.vn, -std::sqrt(2.0 * g_n * k.delta));
     const double ratio = k.delta / k.band;

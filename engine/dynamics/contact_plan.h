@@ -43,6 +43,10 @@ struct ContactStatics {
   double delta = 0.0;           // m, penetration into the band
   double pressing = 0.0;        // m/s², g_n
   double resolved_speed = 0.0;  // m/s, approach below which the contact is resolved
+  // m/s: an approach slower than this stops without restitution and without the
+  // micro-collision's hop (0: none does). Set for the contacts of a pair that rested softly
+  // (soft_rest.h), whose springs undo the depth a hop would: √(2·|g|·λ).
+  double inelastic_below = 0.0;
 };
 // The speed of a fall through the band, √(2·g_n·λ): the paper's bound between collisions and
 // micro-collisions (§4.3). With WorldSettings::converging_contacts, slower approaches rest and

@@ -98,6 +98,8 @@ ResolutionCounts ContactResolver::resolve(std::span<RigidBody> bodies,
       k.resolved_speed =
           std::max(k.resolved_speed, k.pressing * settings.rest_step + rested->allowance);
     }
+    if (rested != nullptr && rested->soft)
+      k.inelastic_below = std::sqrt(2.0 * settings.gravity.norm() * k.band);
     plans[i].state_a = contact_state(bodies[m.body_a], c.point);
     plans[i].state_b = contact_state(bodies[m.body_b], c.point);
   }

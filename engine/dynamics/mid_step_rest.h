@@ -55,6 +55,9 @@ struct RestedPair {
   std::size_t body_a = 0;
   std::size_t body_b = 0;
   double allowance = 0.0;  // m/s
+  // Rested by the soft solve (soft_rest.h): its slow approaches stop without a hop
+  // (ContactStatics::inelastic_below).
+  bool soft = false;
 };
 
 struct MidStepRestCounts {

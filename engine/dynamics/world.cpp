@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -197,16 +198,57 @@ void World::rest_at_mid_step(const std::vector<ContactManifold>& manifolds, doub
   rest_step_ = 0.0;
   rested_.clear();
   if (!settings_.mid_step_rest || rest_withdrawn_) return;
+  rest_step_ = h;
+  // With the soft solve, its islands (soft_rest_island and up) rest softly and the rest by the
+  // mid-step solve; islands share no pair of moving bodies, so the two never meet.
+  std::span<const std::uint8_t> hard_moves = moving_;
+  std::vector<RestedPair> soft_rested;
+  std::vector<std::uint8_t> hard_only;
+  if (settings_.soft_rest_substeps > 0) {
+    const std::vector<std::uint8_t> soft_moves =
+        soft_rest_movers(moving_, manifolds, settings_.soft_rest_island);
+    SoftRestSettings soft;
+    soft.gravity = settings_.gravity;
+    soft.friction_gain = settings_.friction_gain;
+    soft.rest_depth = settings_.rest_depth;
+    soft.substeps = settings_.soft_rest_substeps;
+    soft.hertz = settings_.soft_rest_hertz;
+    SoftRestCounts counts = rest_softly(bodies_, soft_moves, manifolds, h, soft, soft_memory_);
+    soft_rested = std::move(counts.rested);
+    end_velocities_ = std::move(counts.end);
+    stats_.rest_contacts += counts.contacts;
+    hard_only.assign(moving_.size(), 0);
+    for (std::size_t i = 0; i < moving_.size(); ++i)
+      hard_only[i] = moving_[i] != 0 && soft_moves[i] == 0 ? 1 : 0;
+    hard_moves = hard_only;
+  }
   const MidStepRestSettings rest{
       settings_.gravity, settings_.friction_gain, settings_.rest_depth,
       rest_sweep_settings(settings_.gravity, settings_.max_step, settings_.rest_sweeps),
       settings_.converging_contacts};
-  MidStepRestCounts counts = rugosim::rest_at_mid_step(bodies_, moving_, manifolds, h, rest);
-  rest_step_ = h;
-  rested_ = std::move(counts.rested);
+  MidStepRestCounts counts = rugosim::rest_at_mid_step(bodies_, hard_moves, manifolds, h, rest);
+  // Both lists follow the manifolds' (body_a, body_b) order.
+  rested_.reserve(counts.rested.size() + soft_rested.size());
+  std::merge(counts.rested.begin(), counts.rested.end(), soft_rested.begin(), soft_rested.end(),
+             std::back_inserter(rested_), [](const RestedPair& x, const RestedPair& y) {
+               return std::tie(x.body_a, x.body_b) < std::tie(y.body_a, y.body_b);
+             });
   stats_.rest_contacts += counts.contacts;
   stats_.rest_sweeps += counts.sweeps;
   if (!counts.converged) ++stats_.rest_unconverged;
+}
+
+void World::rest_and_place(const std::vector<ContactManifold>& manifolds, double h) {
+  end_velocities_.clear();
+  rest_at_mid_step(manifolds, h);
+  save_start();
+  place_at(h);
+  for (const EndVelocity& e : end_velocities_) {
+    BodyState s = bodies_[e.body].state();
+    s.velocity = e.velocity;
+    s.angular_velocity = e.angular_velocity;
+    bodies_[e.body].set_state(s);
+  }
 }
 
 void World::step(double h) {
@@ -223,9 +265,7 @@ void World::step(double h) {
       before_rest_[i] = bodies_[i].state();
   }
   mark_start_contacts(manifolds_, /*new_step=*/true);
-  rest_at_mid_step(manifolds_, h);
-  save_start();
-  place_at(h);
+  rest_and_place(manifolds_, h);
   detect();
   std::vector<BodyPairKey> arriving;
   if (!overshoots(detected_, &arriving)) {

@@ -68,6 +68,7 @@
 #include "engine/dynamics/mid_step_rest.h"
 #include "engine/dynamics/rigid_body.h"
 #include "engine/dynamics/sleep_tracker.h"
+#include "engine/dynamics/soft_rest.h"
 #include "engine/dynamics/step_planner.h"
 #include "engine/dynamics/step_stats.h"
 
@@ -118,6 +119,16 @@ struct WorldSettings {
   // Gauss-Seidel sweeps of a mid-step solve at most. A pile's solve often runs out of them
   // (counted in StepStats::rest_unconverged): what is left is answered by micro-collisions.
   int rest_sweeps = 64;
+  // Substeps of the soft resting solve (soft_rest.h) that then replaces the hard mid-step solve,
+  // and the slow approaches of its pairs stop without a hop; 0 keeps the hard solve. Needs
+  // mid_step_rest. A pile rests within half a band under it, so the `soft_rest` accuracy knob
+  // also makes the sleep test stricter (with_accuracy, accuracy.h).
+  int soft_rest_substeps = 0;
+  double soft_rest_hertz = 60.0;  // Hz, its contact spring (SoftRestSettings::hertz)
+  // The soft solve takes only the islands of at least this many moving bodies linked by
+  // contacts (soft_rest_movers); smaller ones keep the mid-step solve, whose rest is exact where
+  // it converges (a lone body on a slope does not creep at all).
+  int soft_rest_island = 1;
   // s: bisection stops below this step. 1e-9 s at 10 m/s is 10 nm, below the minimum band
   // (1e-6 of a 1 m body), so a contact is normally caught before the bound is reached.
   double min_step = 1e-9;
@@ -203,14 +214,16 @@ class World {
   // The crossings and contacts of the last accepted state (positions do not change while
   // impulses are applied, so these still describe the current state).
   const std::vector<ContactManifold>& manifolds() const { return manifolds_; }
+  // soft_rest_substeps: the impulses the next rest step starts from (soft_rest.h).
+  const SoftRestMemory& soft_rest_memory() const { return soft_memory_; }
 
   // Checkpoints (world_state.cpp): everything that steers the steps after this moment, exactly
   // (the bodies' states, time, the last state's manifolds and near pairs, the sleep records,
-  // the statistics and the first crossing), as bytes. Events are not included (the commands
-  // clear them every frame). restore_state takes a record saved by a World built from the same
-  // scene and settings; it throws ByteStreamError for one that is malformed or holds another
-  // number of bodies, leaving this World unchanged. Continuing after a restore gives, bit for
-  // bit, what the World that saved it would have given.
+  // the statistics, the first crossing and the soft-rest impulses), as bytes. Events are not
+  // included (the commands clear them every frame). restore_state takes a record saved by a World
+  // built from the same scene and settings; it throws ByteStreamError for one that is malformed or
+  // holds another number of bodies, leaving this World unchanged. Continuing after a restore gives,
+  // bit for bit, what the World that saved it would have given.
   std::string save_state() const;
   void restore_state(std::string_view record);
 
@@ -277,6 +290,9 @@ class World {
   // Before the members move by h (s) from the state whose manifolds are given: their slow
   // contacts' impulses at mid-step, when settings_.mid_step_rest (mid_step_rest.h).
   void rest_at_mid_step(const std::vector<ContactManifold>& manifolds, double h);
+  // Rests them so, saves the members' start and places them at h; after a soft rest each body it
+  // touched takes the substeps' last velocities (soft_rest.h).
+  void rest_and_place(const std::vector<ContactManifold>& manifolds, double h);
   // Impulses for the manifolds of an accepted state at `time` (s), and the step statistics.
   void resolve(const std::vector<ContactManifold>& manifolds, double time);
   // Sets first_crossing_ from the first intersecting pair of `manifolds` (an accepted state).
@@ -314,6 +330,10 @@ class World {
   int consecutive_fallbacks_ = 0;
   double rest_step_ = 0.0;          // s, ResolutionSettings::rest_step of the step in hand
   std::vector<RestedPair> rested_;  // its ResolutionSettings::rested
+  // soft_rest_substeps: the impulses carried from step to step (state, checkpointed), and the
+  // velocities the bodies of the step in hand take once placed at its end.
+  SoftRestMemory soft_memory_;
+  std::vector<EndVelocity> end_velocities_;
   // Mid-step rest: each member's state before the step's impulses, and whether the crossing
   // members of this step went on without them (World::step).
   std::vector<BodyState> before_rest_;

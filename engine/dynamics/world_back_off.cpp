@@ -202,9 +202,7 @@ void World::advance_crossing_members(double h, bool trial_crosses) {
       return;
     }
     if (!trial_crosses) {
-      rest_at_mid_step(accepted_, dt_full);
-      save_start();
-      place_at(dt_full);
+      rest_and_place(accepted_, dt_full);
       detect();
       if (!overshoots(detected_)) {
         accepted_ = detected_;

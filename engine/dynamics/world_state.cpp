@@ -14,7 +14,7 @@
 namespace rugosim {
 namespace {
 
-constexpr std::uint64_t kStateFormat = 2;  // 2: the fallbacks in a row
+constexpr std::uint64_t kStateFormat = 3;  // 2: the fallbacks in a row; 3: soft-rest impulses
 
 void write_vec(ByteWriter& out, const Vec2& v) {
   out.f64(v.x());
@@ -166,6 +166,8 @@ std::string World::save_state() const {
   }
   // Min-step fallbacks in a row carry across frames: the crossing fallback counts them.
   out.i64(consecutive_fallbacks_);
+  // soft_rest_substeps: the warm starts of the next rest step (empty without it).
+  soft_memory_.save(out);
   return out.bytes();
 }
 
@@ -204,6 +206,8 @@ void World::restore_state(std::string_view record) {
     first_crossing = r;
   }
   const std::int64_t fallbacks_in_a_row = in.i64();
+  SoftRestMemory soft_memory;
+  soft_memory.restore(in, bodies_);
   if (!in.at_end()) throw ByteStreamError("bytes after the state");
 
   // All read: only now is the World changed, so a refused record leaves it as it was.
@@ -218,6 +222,7 @@ void World::restore_state(std::string_view record) {
   first_crossing_ = first_crossing;
   events_.clear();
   consecutive_fallbacks_ = static_cast<int>(fallbacks_in_a_row);
+  soft_memory_ = std::move(soft_memory);
 }
 
 }  // namespace rugosim

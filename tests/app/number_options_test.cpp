@@ -55,6 +55,9 @@ std::vector<NumericOption> table() {
     rows.push_back({command, "--mid-step-rest", {"0"}, kPast64Bits});
     rows.push_back({command, "--converging-contacts", {"0"}, kPast64Bits});
     rows.push_back({command, "--rest-sweeps", {}, kPast64Bits});
+    rows.push_back({command, "--soft-rest", {"0"}, kPast64Bits});
+    rows.push_back({command, "--soft-rest-hertz", {"1e-300"}, "1e309"});
+    rows.push_back({command, "--soft-rest-island", {}, kPast64Bits});
     rows.push_back({command, "--seed-depth", {}, kPast64Bits});
     rows.push_back({command, "--contact-passes", {}, kPast64Bits});
     rows.push_back({command, "--contact-threshold", {"0", "1e-300"}, "1e309"});

@@ -22,6 +22,10 @@ TEST(Accuracy, NormalIsTheWorldsDefaults) {
   EXPECT_EQ(normal.rest_stride, defaults.rest_stride);
   EXPECT_EQ(normal.mid_step_rest, defaults.mid_step_rest);
   EXPECT_EQ(normal.rest_sweeps, defaults.rest_sweeps);
+  EXPECT_EQ(normal.soft_rest_substeps, defaults.soft_rest_substeps);
+  EXPECT_EQ(normal.soft_rest_hertz, defaults.soft_rest_hertz);
+  EXPECT_EQ(normal.soft_rest_island, defaults.soft_rest_island);
+  EXPECT_EQ(normal.sleep.bands, defaults.sleep.bands);
   EXPECT_EQ(normal.min_step, defaults.min_step);
   EXPECT_EQ(normal.max_bisections, defaults.max_bisections);
   EXPECT_EQ(normal.max_resolution_passes, defaults.max_resolution_passes);
@@ -74,6 +78,9 @@ TEST(Accuracy, EveryKnobReachesItsWorldSetting) {
   EXPECT_EQ(w.narrow_phase.max_depth, 60);
   EXPECT_EQ(w.max_resolution_passes, 100000);
   EXPECT_EQ(w.resolved_gap_fraction, 0.25);
+  EXPECT_EQ(w.soft_rest_substeps, 64);
+  EXPECT_EQ(w.soft_rest_hertz, 5e5);
+  EXPECT_EQ(w.soft_rest_island, 1000000);
   EXPECT_EQ(find_accuracy_knob("max_stp"), nullptr);
   // The rest of the settings are the caller's.
   WorldSettings base;

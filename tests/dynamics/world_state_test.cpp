@@ -5,6 +5,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstdlib>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,12 +25,13 @@ std::string scene_path(const std::string& name) {
   return std::string(dir != nullptr ? dir : ".") + "/scenes/" + name + ".json";
 }
 
-std::unique_ptr<World> build(const std::string& name, int converging_contacts = -1) {
+using Knobs = std::map<std::string, double>;
+
+std::unique_ptr<World> build(const std::string& name, const Knobs& knobs = {}) {
   SceneLoad load = load_scene_file(scene_path(name));
   EXPECT_TRUE(load.ok()) << name;
-  if (converging_contacts >= 0) {
-    load.scene.accuracy.knobs["converging_contacts"] = converging_contacts;
-  }
+  for (const auto& [key, value] : knobs)
+    load.scene.accuracy.knobs[key] = value;
   SceneWorld built = build_world(load.scene, name);
   EXPECT_TRUE(built.world) << name;
   return std::move(built.world);
@@ -56,9 +58,9 @@ Frame advance_frame(World& world, std::size_t frame, double fps) {
   return f;
 }
 
-void expect_resumes_exactly(const std::string& name, std::size_t last, int converging = -1) {
+void expect_resumes_exactly(const std::string& name, std::size_t last, const Knobs& knobs = {}) {
   const double fps = 30.0;
-  std::unique_ptr<World> single = build(name, converging);
+  std::unique_ptr<World> single = build(name, knobs);
   std::vector<Frame> frames(last + 1);
   std::vector<std::string> records(last + 1);
   for (std::size_t k = 1; k <= last; ++k) {
@@ -66,7 +68,7 @@ void expect_resumes_exactly(const std::string& name, std::size_t last, int conve
     records[k] = single->save_state();
   }
   for (std::size_t k = 15; k < last; k += 15) {
-    std::unique_ptr<World> resumed = build(name, converging);
+    std::unique_ptr<World> resumed = build(name, knobs);
     resumed->restore_state(records[k]);
     ASSERT_EQ(full_state_hash(*resumed), frames[k].hash) << name << " restored at frame " << k;
     for (std::size_t j = k + 1; j <= last; ++j) {
@@ -90,7 +92,18 @@ TEST(WorldState, PileResumesExactlyThroughSleepFromEveryFifteenthFrame) {
 }
 
 TEST(WorldState, ConvergingContactsResumeExactly) {
-  expect_resumes_exactly("figure06_type1_type1", 45, /*converging_contacts=*/1);
+  expect_resumes_exactly("figure06_type1_type1", 45, {{"converging_contacts", 1}});
+}
+
+// The soft resting solve's impulses carry from step to step: they are state, and a resumed run
+// that lost them would differ at its first rest step.
+TEST(WorldState, SoftRestResumesExactlyWithItsImpulses) {
+  const Knobs soft{{"soft_rest", 8}};
+  std::unique_ptr<World> probe = build("pile_50", soft);
+  probe->advance_to(2.0);
+  ASSERT_FALSE(probe->soft_rest_memory().impulses().empty())
+      << "the resting pile should have impulses to remember";
+  expect_resumes_exactly("pile_50", 90, soft);
 }
 
 TEST(WorldState, RefusesBadRecordsAndKeepsItsState) {

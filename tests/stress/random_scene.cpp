@@ -255,7 +255,8 @@ StressScene random_stress_scene(std::uint64_t seed) {
   // Resting contact by micro-collisions alone (mid_step_rest 0, the presets' model before
   // mid-step rest) for a quarter of the scenes, half of those without rest steps too; and
   // mid-step solves cut to 4 sweeps for an eighth, so that unconverged solves are common; the
-  // step-independent contact rules (converging_contacts 1) for another eighth. Drawn
+  // step-independent contact rules (converging_contacts 1) for another eighth, and the soft
+  // resting solve (soft_rest 8) for another. Drawn
   // from a stream of its own, so that a seed's other draws stay what they were.
   Rng knob_rng(derive_seed(seed, 0x3e57));
   const double knob_draw = knob_rng.uniform();
@@ -267,6 +268,8 @@ StressScene random_stress_scene(std::uint64_t seed) {
     world["accuracy"] = {{"preset", accuracy}, {"rest_sweeps", 4}};
   } else if (knob_draw < 0.5) {
     world["accuracy"] = {{"preset", accuracy}, {"converging_contacts", 1}};
+  } else if (knob_draw < 0.625) {
+    world["accuracy"] = {{"preset", accuracy}, {"soft_rest", 8}};
   }
   json bodies = json::array();
   if (s.kind == "loose") loose(rng, s, bodies);

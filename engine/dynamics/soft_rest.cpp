@@ -1,0 +1,338 @@
+#include "engine/dynamics/soft_rest.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <tuple>
+#include <utility>
+
+#include "engine/core/disjoint_sets.h"
+#include "engine/geometry/friction.h"
+
+namespace rugosim {
+namespace {
+
+auto key_of(const SoftRestImpulse& x) {
+  return std::tie(x.body_a, x.body_b, x.segment_a, x.segment_b);
+}
+
+// One contact row: arms and masses taken once, the impulses accumulated over the substeps.
+struct Row {
+  std::size_t a = 0;
+  std::size_t b = 0;
+  std::size_t segment_a = 0;
+  std::size_t segment_b = 0;
+  Vec2 arm_a = Vec2::Zero();
+  Vec2 arm_b = Vec2::Zero();
+  Vec2 normal = Vec2::Zero();
+  Vec2 tangent = Vec2::Zero();
+  double normal_mass = 0.0;
+  double tangent_mass = 0.0;
+  double mu = 0.0;
+  double gap = 0.0;  // m, from the contact to its rest depth at the step's start (> 0: open)
+  double normal_impulse = 0.0;
+  double tangent_impulse = 0.0;
+};
+
+// Box2D v3's soft constraint coefficients for a spring of `hertz` and `zeta` over a substep hs.
+struct Softness {
+  double bias_rate = 0.0;      // 1/s
+  double mass_scale = 1.0;     // of the effective mass
+  double impulse_scale = 0.0;  // of the accumulated impulse
+};
+
+Softness make_soft(double hertz, double zeta, double hs) {
+  const double omega = 2.0 * std::numbers::pi * hertz;
+  const double a1 = 2.0 * zeta + hs * omega;
+  const double a2 = hs * omega * a1;
+  const double a3 = 1.0 / (1.0 + a2);
+  return {omega / a1, a2 * a3, a3};
+}
+
+struct Rows {
+  std::vector<Row> rows;
+  std::vector<std::uint8_t> touched;  // per body: in some row
+  std::vector<RestedPair> rested;
+};
+
+Rows make_rows(std::span<const RigidBody> bodies, std::span<const std::uint8_t> moves,
+               std::span<const ContactManifold> manifolds, const SoftRestSettings& settings,
+               const SoftRestMemory& memory, double carry) {
+  Rows out;
+  out.touched.assign(bodies.size(), 0);
+  for (const ContactManifold& m : manifolds) {
+    if (m.state() != PairState::kContact) continue;
+    if (moves[m.body_a] == 0 && moves[m.body_b] == 0) continue;
+    out.rested.push_back({m.body_a, m.body_b, 0.0, true});
+    const RigidBody& body_a = bodies[m.body_a];
+    const RigidBody& body_b = bodies[m.body_b];
+    const double inv_mass_a = moves[m.body_a] != 0 ? body_a.inverse_mass() : 0.0;
+    const double inv_inertia_a = moves[m.body_a] != 0 ? body_a.inverse_inertia() : 0.0;
+    const double inv_mass_b = moves[m.body_b] != 0 ? body_b.inverse_mass() : 0.0;
+    const double inv_inertia_b = moves[m.body_b] != 0 ? body_b.inverse_inertia() : 0.0;
+    const double min_band = body_a.shape().min_band() + body_b.shape().min_band();
+    for (const Contact& c : m.contacts) {
+      Row r;
+      r.a = m.body_a;
+      r.b = m.body_b;
+      r.segment_a = c.segment_a;
+      r.segment_b = c.segment_b;
+      r.arm_a = c.point - body_a.state().position;
+      r.arm_b = c.point - body_b.state().position;
+      r.normal = c.normal;
+      r.tangent = perp(c.normal);
+      const auto effective = [&](const Vec2& direction) {
+        const double ra = cross(r.arm_a, direction);
+        const double rb = cross(r.arm_b, direction);
+        return inv_mass_a + inv_mass_b + inv_inertia_a * ra * ra + inv_inertia_b * rb * rb;
+      };
+      const double kn = effective(r.normal);
+      const double kt = effective(r.tangent);
+      if (!(kn > 0.0)) continue;
+      r.normal_mass = 1.0 / kn;
+      r.tangent_mass = kt > 0.0 ? 1.0 / kt : 0.0;
+      const double band = std::max(c.lambda_a + c.lambda_b, min_band);
+      r.gap = c.distance - (1.0 - settings.rest_depth) * band;
+      r.mu =
+          contact_friction(body_a.friction_coefficient(c.segment_a, c.t_a, settings.friction_gain),
+                           body_b.friction_coefficient(c.segment_b, c.t_b, settings.friction_gain));
+      if (carry > 0.0) {
+        if (const SoftRestImpulse* x = memory.find(r.a, r.b, r.segment_a, r.segment_b)) {
+          r.normal_impulse = carry * x->normal;
+          const double limit = r.mu * r.normal_impulse;
+          r.tangent_impulse = std::clamp(carry * x->tangent, -limit, limit);
+        }
+      }
+      out.touched[r.a] = out.touched[r.b] = 1;
+      out.rows.push_back(r);
+    }
+  }
+  return out;
+}
+
+// The substeps' working velocities, displacements and inverse masses (0 for what does not move).
+struct Motion {
+  std::vector<Vec2> velocity;
+  std::vector<double> spin;
+  std::vector<Vec2> displacement;
+  std::vector<double> turn;
+  std::vector<double> inv_mass;
+  std::vector<double> inv_inertia;
+
+  Vec2 relative_velocity(const Row& r) const {
+    return (velocity[r.a] + spin[r.a] * perp(r.arm_a)) -
+           (velocity[r.b] + spin[r.b] * perp(r.arm_b));
+  }
+  double gap(const Row& r) const {
+    const Vec2 moved_a = displacement[r.a] + turn[r.a] * perp(r.arm_a);
+    const Vec2 moved_b = displacement[r.b] + turn[r.b] * perp(r.arm_b);
+    return r.gap + r.normal.dot(moved_a - moved_b);
+  }
+  void apply(const Row& r, const Vec2& impulse) {
+    velocity[r.a] += inv_mass[r.a] * impulse;
+    spin[r.a] += inv_inertia[r.a] * cross(r.arm_a, impulse);
+    velocity[r.b] -= inv_mass[r.b] * impulse;
+    spin[r.b] -= inv_inertia[r.b] * cross(r.arm_b, impulse);
+  }
+};
+
+// One Gauss-Seidel sweep over the rows; `biased` lets deep rows push apart (the soft sweep),
+// otherwise they only stop (the relax sweep).
+void sweep(std::vector<Row>& rows, Motion& motion, const Softness& soft, double hs, bool biased) {
+  for (Row& r : rows) {
+    const double gap = motion.gap(r);
+    double bias = 0.0;
+    double mass_scale = 1.0;
+    double impulse_scale = 0.0;
+    if (gap > 0.0) {
+      bias = gap / hs;  // speculative: may close the gap within the substep
+    } else if (biased) {
+      bias = soft.bias_rate * gap;
+      mass_scale = soft.mass_scale;
+      impulse_scale = soft.impulse_scale;
+    }
+    const double vn = motion.relative_velocity(r).dot(r.normal);
+    const double normal =
+        std::max(0.0, r.normal_impulse - r.normal_mass * mass_scale * (vn + bias) -
+                          impulse_scale * r.normal_impulse);
+    motion.apply(r, (normal - r.normal_impulse) * r.normal);
+    r.normal_impulse = normal;
+    if (r.tangent_mass > 0.0) {
+      const double vt = motion.relative_velocity(r).dot(r.tangent);
+      const double limit = r.mu * r.normal_impulse;
+      const double tangent = std::clamp(r.tangent_impulse - r.tangent_mass * vt, -limit, limit);
+      motion.apply(r, (tangent - r.tangent_impulse) * r.tangent);
+      r.tangent_impulse = tangent;
+    }
+  }
+}
+
+}  // namespace
+
+const SoftRestImpulse* SoftRestMemory::find(std::size_t body_a, std::size_t body_b,
+                                            std::size_t segment_a, std::size_t segment_b) const {
+  const SoftRestImpulse probe{body_a, body_b, segment_a, segment_b, 0.0, 0.0};
+  const auto it = std::lower_bound(
+      impulses_.begin(), impulses_.end(), probe,
+      [](const SoftRestImpulse& x, const SoftRestImpulse& y) { return key_of(x) < key_of(y); });
+  return it != impulses_.end() && key_of(*it) == key_of(probe) ? &*it : nullptr;
+}
+
+void SoftRestMemory::replace(double substep, std::vector<SoftRestImpulse> impulses) {
+  std::stable_sort(
+      impulses.begin(), impulses.end(),
+      [](const SoftRestImpulse& x, const SoftRestImpulse& y) { return key_of(x) < key_of(y); });
+  // Keep the last of each run of equal keys.
+  std::vector<SoftRestImpulse> unique;
+  unique.reserve(impulses.size());
+  for (std::size_t i = 0; i < impulses.size(); ++i) {
+    if (i + 1 < impulses.size() && key_of(impulses[i]) == key_of(impulses[i + 1])) continue;
+    unique.push_back(impulses[i]);
+  }
+  substep_ = unique.empty() ? 0.0 : substep;
+  impulses_ = std::move(unique);
+}
+
+void SoftRestMemory::clear() {
+  substep_ = 0.0;
+  impulses_.clear();
+}
+
+void SoftRestMemory::save(ByteWriter& out) const {
+  out.f64(substep_);
+  out.u64(impulses_.size());
+  for (const SoftRestImpulse& x : impulses_) {
+    out.u64(x.body_a);
+    out.u64(x.body_b);
+    out.u64(x.segment_a);
+    out.u64(x.segment_b);
+    out.f64(x.normal);
+    out.f64(x.tangent);
+  }
+}
+
+void SoftRestMemory::restore(ByteReader& in, std::span<const RigidBody> bodies) {
+  const double substep = in.f64();
+  std::vector<SoftRestImpulse> impulses(in.count(48));
+  const auto body = [&] {
+    const std::uint64_t i = in.u64();
+    if (i >= bodies.size()) throw ByteStreamError("a soft-rest impulse of a body past the last");
+    return static_cast<std::size_t>(i);
+  };
+  const auto segment = [&](std::size_t b) {
+    const std::uint64_t s = in.u64();
+    if (s >= bodies[b].shape().curve().size())
+      throw ByteStreamError("a soft-rest impulse of a segment past the body's last");
+    return static_cast<std::size_t>(s);
+  };
+  for (SoftRestImpulse& x : impulses) {
+    x.body_a = body();
+    x.body_b = body();
+    x.segment_a = segment(x.body_a);
+    x.segment_b = segment(x.body_b);
+    x.normal = in.f64();
+    x.tangent = in.f64();
+  }
+  if (!std::is_sorted(
+          impulses.begin(), impulses.end(),
+          [](const SoftRestImpulse& x, const SoftRestImpulse& y) { return key_of(x) < key_of(y); }))
+    throw ByteStreamError("soft-rest impulses out of order");
+  substep_ = substep;
+  impulses_ = std::move(impulses);
+}
+
+std::vector<std::uint8_t> soft_rest_movers(std::span<const std::uint8_t> moves,
+                                           std::span<const ContactManifold> manifolds,
+                                           int min_island) {
+  const std::size_t n = moves.size();
+  std::vector<std::uint8_t> soft(moves.begin(), moves.end());
+  if (min_island <= 1) return soft;
+  DisjointSets islands;
+  islands.reset(n);
+  for (const ContactManifold& m : manifolds) {
+    if (m.state() == PairState::kContact && moves[m.body_a] != 0 && moves[m.body_b] != 0)
+      islands.unite(m.body_a, m.body_b);
+  }
+  std::vector<std::size_t> size(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (moves[i] != 0) ++size[islands.root(i)];
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (moves[i] != 0 && size[islands.root(i)] < static_cast<std::size_t>(min_island)) soft[i] = 0;
+  }
+  return soft;
+}
+
+SoftRestCounts rest_softly(std::span<RigidBody> bodies, std::span<const std::uint8_t> moves,
+                           std::span<const ContactManifold> manifolds, double h,
+                           const SoftRestSettings& settings, SoftRestMemory& memory) {
+  const int n = std::max(settings.substeps, 1);
+  const double hs = h / n;
+  // An impulse per substep scales with the substep. One remembered from a much shorter step
+  // (a back-off's) says nothing about this one's: only up to twice its substep is carried.
+  const double carry =
+      memory.substep() > 0.0 && hs <= 2.0 * memory.substep() ? hs / memory.substep() : 0.0;
+  Rows made = make_rows(bodies, moves, manifolds, settings, memory, carry);
+  SoftRestCounts counts;
+  counts.rested = std::move(made.rested);
+  if (made.rows.empty()) {
+    memory.clear();
+    return counts;
+  }
+  counts.contacts = made.rows.size();
+  std::vector<Row>& rows = made.rows;
+  const std::vector<std::uint8_t>& touched = made.touched;
+
+  const std::size_t nb = bodies.size();
+  Motion motion{std::vector<Vec2>(nb, Vec2::Zero()), std::vector<double>(nb, 0.0),
+                std::vector<Vec2>(nb, Vec2::Zero()), std::vector<double>(nb, 0.0),
+                std::vector<double>(nb, 0.0),        std::vector<double>(nb, 0.0)};
+  for (std::size_t i = 0; i < nb; ++i) {
+    if (touched[i] == 0) continue;
+    motion.velocity[i] = bodies[i].state().velocity;
+    motion.spin[i] = bodies[i].state().angular_velocity;
+    if (moves[i] != 0) {
+      motion.inv_mass[i] = bodies[i].inverse_mass();
+      motion.inv_inertia[i] = bodies[i].inverse_inertia();
+    }
+  }
+  // Stiffer than a quarter of the substep's rate, a spring would ring (Box2D caps it so too).
+  const Softness soft = make_soft(std::min(settings.hertz, 0.25 / hs), settings.damping_ratio, hs);
+  for (int k = 0; k < n; ++k) {
+    for (std::size_t i = 0; i < nb; ++i) {
+      if (touched[i] != 0 && moves[i] != 0) motion.velocity[i] += hs * settings.gravity;
+    }
+    for (const Row& r : rows)
+      motion.apply(r, r.normal_impulse * r.normal + r.tangent_impulse * r.tangent);
+    sweep(rows, motion, soft, hs, /*biased=*/true);
+    for (std::size_t i = 0; i < nb; ++i) {
+      if (touched[i] == 0 || moves[i] == 0) continue;
+      motion.displacement[i] += hs * motion.velocity[i];
+      motion.turn[i] += hs * motion.spin[i];
+    }
+    sweep(rows, motion, soft, hs, /*biased=*/false);
+  }
+
+  // Only a step about as long as the remembered one replaces it: a short remainder's impulses
+  // (an inelastic stop does not shrink with the step) would be scaled up next time, and once
+  // blew a body to 8e7 m/s (§8.16).
+  if (memory.substep() == 0.0 || hs >= 0.5 * memory.substep()) {
+    std::vector<SoftRestImpulse> kept;
+    for (const Row& r : rows) {
+      if (r.normal_impulse > 0.0)
+        kept.push_back({r.a, r.b, r.segment_a, r.segment_b, r.normal_impulse, r.tangent_impulse});
+    }
+    memory.replace(hs, std::move(kept));
+  }
+  for (std::size_t i = 0; i < nb; ++i) {
+    if (touched[i] == 0 || moves[i] == 0) continue;
+    BodyState s = bodies[i].state();
+    s.velocity = motion.displacement[i] / h - 0.5 * h * settings.gravity;
+    s.angular_velocity = motion.turn[i] / h;
+    bodies[i].set_state(s);
+    counts.end.push_back({i, motion.velocity[i], motion.spin[i]});
+  }
+  return counts;
+}
+
+}  // namespace rugosim
