@@ -227,12 +227,16 @@ void World::rest_at_mid_step(const std::vector<ContactManifold>& manifolds, doub
       rest_sweep_settings(settings_.gravity, settings_.max_step, settings_.rest_sweeps),
       settings_.converging_contacts};
   MidStepRestCounts counts = rugosim::rest_at_mid_step(bodies_, hard_moves, manifolds, h, rest);
-  // Both lists follow the manifolds' (body_a, body_b) order.
-  rested_.reserve(counts.rested.size() + soft_rested.size());
-  std::merge(counts.rested.begin(), counts.rested.end(), soft_rested.begin(), soft_rested.end(),
-             std::back_inserter(rested_), [](const RestedPair& x, const RestedPair& y) {
-               return std::tie(x.body_a, x.body_b) < std::tie(y.body_a, y.body_b);
-             });
+  if (soft_rested.empty()) {
+    rested_ = std::move(counts.rested);  // the mid-step solve alone: no copy on its path
+  } else {
+    // Both lists follow the manifolds' (body_a, body_b) order.
+    rested_.reserve(counts.rested.size() + soft_rested.size());
+    std::merge(counts.rested.begin(), counts.rested.end(), soft_rested.begin(), soft_rested.end(),
+               std::back_inserter(rested_), [](const RestedPair& x, const RestedPair& y) {
+                 return std::tie(x.body_a, x.body_b) < std::tie(y.body_a, y.body_b);
+               });
+  }
   stats_.rest_contacts += counts.contacts;
   stats_.rest_sweeps += counts.sweeps;
   if (!counts.converged) ++stats_.rest_unconverged;
