@@ -148,14 +148,6 @@ WorldSettings with_accuracy(WorldSettings base, const Accuracy& accuracy) {
   base.soft_rest_substeps = accuracy.soft_rest;
   base.soft_rest_hertz = accuracy.soft_rest_hertz;
   base.soft_rest_island = accuracy.soft_rest_island;
-  if (accuracy.soft_rest > 0) {
-    // The soft solve leaves a pile within half a band of where it settled, so a body must stay
-    // that still, within 0.1% of its radius, for a second before it sleeps. Under the looser
-    // test (two bands, 1%, half a second) the 50-body pile slept while still compacting.
-    base.sleep.time = 1.0;
-    base.sleep.bands = 0.5;
-    base.sleep.tolerance = 0.001;
-  }
   base.min_step = accuracy.toi_tolerance;
   base.max_bisections = accuracy.max_bisections;
   base.max_resolution_passes = accuracy.contact_passes;

@@ -40,16 +40,18 @@ struct Accuracy {
   int rest_sweeps = 64;
   // Substeps of the soft resting solve (soft_rest.h; WorldSettings::soft_rest_substeps) in
   // place of the mid-step solve, 0 for none: Box2D v3's soft contacts with warm starts, in n
-  // substeps of each rest step, under which a pile comes to rest within half a band and sleeps
-  // (the sleep test is then stricter: a body must stay within half a band and 0.1% of its
-  // radius for a second). 0 in every preset for now (docs/research/resting-contact.md §8.16:
-  // it does not yet keep the closed forms' exact rest).
+  // substeps of each rest step, under which a pile comes to rest within a fifth of a band and
+  // sleeps (its bodies are judged by the sleep test's stricter soft windows, sleep_tracker.h).
+  // 0 in every preset for now (docs/research/resting-contact.md §8.18: a stack of two boxes
+  // keeps rocking under it).
   int soft_rest = 0;
   // Hz: the soft contacts' spring (SoftRestSettings::hertz).
   double soft_rest_hertz = 60.0;
   // With soft_rest: the smallest island (moving bodies linked by contacts) it takes; smaller
-  // islands keep the mid-step solve (WorldSettings::soft_rest_island).
-  int soft_rest_island = 1;
+  // islands, and islands with a contact band too narrow for the spring (soft_rest_min_band),
+  // keep the mid-step solve (WorldSettings::soft_rest_island). 2: a body alone on a slope rests
+  // exactly, where the springs would let it creep 5e-7 m/s.
+  int soft_rest_island = 2;
   // s: a step whose end crosses is bisected back towards the first contact until it is this
   // short (the time-of-impact tolerance; World's min_step).
   double toi_tolerance = 1e-9;

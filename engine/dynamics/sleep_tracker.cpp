@@ -21,6 +21,8 @@ void SleepTracker::track(std::span<const RigidBody> bodies, double time) {
     anchor_time_.push_back(time);
     still_windows_.push_back(0);
     band_seen_.push_back(0.0);
+    soft_seen_.push_back(0);
+    soft_judged_.push_back(0);
   }
 }
 
@@ -40,6 +42,7 @@ void SleepTracker::anchor(const RigidBody& body, std::size_t i, double time) {
   anchor_angle_[i] = body.state().angle;
   anchor_time_[i] = time;
   band_seen_[i] = 0.0;
+  soft_seen_[i] = 0;
 }
 
 void SleepTracker::wake_island(std::span<const RigidBody> bodies, std::size_t island, double time) {
@@ -78,7 +81,8 @@ std::uint64_t SleepTracker::wake_touched(std::span<const RigidBody> bodies,
 
 std::uint64_t SleepTracker::update(std::span<RigidBody> bodies,
                                    std::span<const ContactManifold> manifolds,
-                                   std::span<const BodyPair> near_pairs, double time) {
+                                   std::span<const BodyPair> near_pairs,
+                                   std::span<const RestedPair> rested, double time) {
   if (!settings_.enabled) return 0;
   const std::size_t n = bodies.size();
   for (const ContactManifold& m : manifolds) {
@@ -90,6 +94,11 @@ std::uint64_t SleepTracker::update(std::span<RigidBody> bodies,
       band_seen_[m.body_b] = std::max(band_seen_[m.body_b], band);
     }
   }
+  for (const RestedPair& pair : rested) {
+    if (!pair.soft) continue;
+    soft_seen_[pair.body_a] = 1;
+    soft_seen_[pair.body_b] = 1;
+  }
   if (time < next_check_) return 0;
   const double window = 0.5 * settings_.time;
   next_check_ = time + window;
@@ -100,11 +109,14 @@ std::uint64_t SleepTracker::update(std::span<RigidBody> bodies,
     if (time - anchor_time_[i] < window) continue;
     const BodyState& s = bodies[i].state();
     const double radius = bodies[i].bounding_radius();
-    const double d = settings_.bands * band_seen_[i] + settings_.tolerance * radius;
+    const bool soft = soft_seen_[i] != 0;
+    const double d = soft ? settings_.soft_bands * band_seen_[i] + settings_.soft_tolerance * radius
+                          : settings_.bands * band_seen_[i] + settings_.tolerance * radius;
     const Vec2 moved = s.position - anchor_position_[i];
     const double turned = std::abs(s.angle - anchor_angle_[i]) * radius;
     const bool still = std::abs(moved.x()) <= d && std::abs(moved.y()) <= d && turned <= d;
     still_windows_[i] = still ? still_windows_[i] + 1 : 0;
+    soft_judged_[i] = soft ? 1 : 0;
     anchor(bodies[i], i, time);
   }
 
@@ -115,11 +127,13 @@ std::uint64_t SleepTracker::update(std::span<RigidBody> bodies,
     }
     islands_.unite(pair.a, pair.b);
   }
-  // An island sleeps when none of its bodies is restless: each had two still windows in a row.
+  // An island sleeps when none of its bodies is restless: each had two still windows in a row,
+  // or soft_windows when its last window was a soft one.
   restless_.assign(n, 0);
   for (std::size_t i = 0; i < n; ++i) {
     if (bodies[i].fixed() || asleep(i)) continue;
-    if (still_windows_[i] < 2) restless_[islands_.root(i)] = 1;
+    const int needed = soft_judged_[i] != 0 ? std::max(settings_.soft_windows, 2) : 2;
+    if (still_windows_[i] < needed) restless_[islands_.root(i)] = 1;
   }
   std::uint64_t slept = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -148,6 +162,8 @@ void SleepTracker::save(ByteWriter& out) const {
     out.f64(anchor_time_[i]);
     out.i64(still_windows_[i]);
     out.f64(band_seen_[i]);
+    out.u8(soft_seen_[i]);
+    out.u8(soft_judged_[i]);
   }
   out.f64(next_check_);
 }
@@ -161,6 +177,8 @@ void SleepTracker::restore(ByteReader& in, std::size_t bodies) {
   anchor_time_.assign(bodies, 0.0);
   still_windows_.assign(bodies, 0);
   band_seen_.assign(bodies, 0.0);
+  soft_seen_.assign(bodies, 0);
+  soft_judged_.assign(bodies, 0);
   for (std::size_t i = 0; i < bodies; ++i) {
     asleep_[i] = in.u8();
     island_[i] = in.u64();
@@ -171,6 +189,8 @@ void SleepTracker::restore(ByteReader& in, std::size_t bodies) {
     anchor_time_[i] = in.f64();
     still_windows_[i] = static_cast<int>(in.i64());
     band_seen_[i] = in.f64();
+    soft_seen_[i] = in.u8() != 0 ? 1 : 0;
+    soft_judged_[i] = in.u8() != 0 ? 1 : 0;
   }
   next_check_ = in.f64();
 }

@@ -19,6 +19,14 @@
 // still for sleep_time: its velocities are set to zero and its bodies are skipped by free
 // flight and by pairs with fixed or sleeping bodies. When an awake movable body touches or
 // crosses a sleeping one, the sleeping body's whole island wakes, with fresh anchors.
+//
+// Bodies that rested softly during a window (soft_rest.h: no hops, they sit within a fifth of
+// a band of where they settled) are judged by a stricter test: d = soft_bands × band +
+// soft_tolerance × radius, and soft_windows still windows in a row. With the defaults (a
+// fifth of a band, 0.05% of the radius, four windows of 0.25 s), a body that sleeps has moved
+// at most 0.8 band + 0.2% of its radius over its last second awake: the net creep of issue 14's
+// acceptance, bounded by construction. Hard-resting bodies keep the test above, which their
+// hops need.
 #pragma once
 
 #include <cstddef>
@@ -31,6 +39,7 @@
 #include "engine/core/byte_stream.h"
 #include "engine/core/disjoint_sets.h"
 #include "engine/core/types.h"
+#include "engine/dynamics/mid_step_rest.h"
 #include "engine/dynamics/rigid_body.h"
 
 namespace rugosim {
@@ -47,6 +56,10 @@ struct SleepSettings {
   // per 0.25 s window lets a 10 cm body of σ = 0 creep at most 4 mm/s and still sleep (Box2D's
   // fixed tolerance, 5 cm/s, is far looser for bodies of this size).
   double tolerance = 0.01;
+  // The stricter test of bodies that rested softly in the window (see above).
+  double soft_bands = 0.2;
+  double soft_tolerance = 0.0005;
+  int soft_windows = 4;
 };
 
 struct SleepCounts {
@@ -79,13 +92,15 @@ class SleepTracker {
   // Wakes body i's island (e.g. when the caller changes its state); no-op when awake.
   void wake(std::span<const RigidBody> bodies, std::size_t body, double time);
 
-  // After the impulses of an accepted state at `time` (s): notes the widest contact bands and,
-  // when a check is due, judges each awake body's window and puts to sleep every island whose
-  // bodies all had two still windows in a row, zeroing their velocities. Returns how many
-  // islands fell asleep.
+  // After the impulses of an accepted state at `time` (s): notes the widest contact bands and
+  // the bodies of pairs that rested softly (`rested`, the step's rest solve), and, when a check
+  // is due, judges each awake body's window and puts to sleep every island whose bodies all
+  // had enough still windows in a row (two, or soft_windows after a soft window), zeroing their
+  // velocities. Returns how many islands fell asleep.
   // `near_pairs` are the broad-phase pairs of the same state (CollisionPipeline::near_pairs).
   std::uint64_t update(std::span<RigidBody> bodies, std::span<const ContactManifold> manifolds,
-                       std::span<const BodyPair> near_pairs, double time);
+                       std::span<const BodyPair> near_pairs, std::span<const RestedPair> rested,
+                       double time);
 
   // Checkpoints (World::save_state): every per-body record and the next check, exactly; the
   // scratch of update() is not state. restore throws ByteStreamError when the record does not
@@ -100,15 +115,17 @@ class SleepTracker {
   SleepSettings settings_;
   // Per body; uint8_t rather than vector<bool> for plain indexing.
   std::vector<std::uint8_t> asleep_;
-  std::vector<std::size_t> island_;     // while asleep: the island's smallest body index
-  std::vector<Vec2> anchor_position_;   // m
-  std::vector<double> anchor_angle_;    // rad
-  std::vector<double> anchor_time_;     // s
-  std::vector<int> still_windows_;      // still windows in a row, up to now
-  double next_check_ = 0.0;             // s: world time of the next check
-  std::vector<double> band_seen_;       // m, widest contact band in the current window
-  DisjointSets islands_;                // scratch of update(), reused
-  std::vector<std::uint8_t> restless_;  // per island root: scratch of update()
+  std::vector<std::size_t> island_;        // while asleep: the island's smallest body index
+  std::vector<Vec2> anchor_position_;      // m
+  std::vector<double> anchor_angle_;       // rad
+  std::vector<double> anchor_time_;        // s
+  std::vector<int> still_windows_;         // still windows in a row, up to now
+  double next_check_ = 0.0;                // s: world time of the next check
+  std::vector<double> band_seen_;          // m, widest contact band in the current window
+  std::vector<std::uint8_t> soft_seen_;    // 1: rested softly in the current window
+  std::vector<std::uint8_t> soft_judged_;  // 1: the last window judged was a soft one
+  DisjointSets islands_;                   // scratch of update(), reused
+  std::vector<std::uint8_t> restless_;     // per island root: scratch of update()
 };
 
 }  // namespace rugosim

@@ -243,10 +243,10 @@ void SoftRestMemory::restore(ByteReader& in, std::span<const RigidBody> bodies) 
 
 std::vector<std::uint8_t> soft_rest_movers(std::span<const std::uint8_t> moves,
                                            std::span<const ContactManifold> manifolds,
-                                           int min_island) {
+                                           int min_island, double min_band) {
   const std::size_t n = moves.size();
   std::vector<std::uint8_t> soft(moves.begin(), moves.end());
-  if (min_island <= 1) return soft;
+  if (min_island <= 1 && min_band <= 0.0) return soft;
   DisjointSets islands;
   islands.reset(n);
   for (const ContactManifold& m : manifolds) {
@@ -254,13 +254,29 @@ std::vector<std::uint8_t> soft_rest_movers(std::span<const std::uint8_t> moves,
       islands.unite(m.body_a, m.body_b);
   }
   std::vector<std::size_t> size(n, 0);
+  std::vector<std::uint8_t> narrow(n, 0);  // per island root: holds a contact below min_band
   for (std::size_t i = 0; i < n; ++i) {
     if (moves[i] != 0) ++size[islands.root(i)];
   }
+  for (const ContactManifold& m : manifolds) {
+    if (m.state() != PairState::kContact) continue;
+    for (const Contact& c : m.contacts) {
+      if (c.lambda_a + c.lambda_b >= min_band) continue;
+      if (moves[m.body_a] != 0) narrow[islands.root(m.body_a)] = 1;
+      if (moves[m.body_b] != 0) narrow[islands.root(m.body_b)] = 1;
+    }
+  }
   for (std::size_t i = 0; i < n; ++i) {
-    if (moves[i] != 0 && size[islands.root(i)] < static_cast<std::size_t>(min_island)) soft[i] = 0;
+    if (moves[i] == 0) continue;
+    const std::size_t root = islands.root(i);
+    if (size[root] < static_cast<std::size_t>(min_island) || narrow[root] != 0) soft[i] = 0;
   }
   return soft;
+}
+
+double soft_rest_min_band(const Vec2& gravity, double hertz) {
+  const double omega = 2.0 * std::numbers::pi * hertz;
+  return 10.0 * gravity.norm() / (omega * omega);
 }
 
 SoftRestCounts rest_softly(std::span<RigidBody> bodies, std::span<const std::uint8_t> moves,

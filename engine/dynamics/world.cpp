@@ -71,8 +71,13 @@ World::World(WorldSettings settings)
   pool_ = OwnedThreadPool(settings_.threads);
   if (!(settings_.sleep.time >= 0.0 && std::isfinite(settings_.sleep.time) &&
         settings_.sleep.tolerance >= 0.0 && std::isfinite(settings_.sleep.tolerance) &&
-        settings_.sleep.bands >= 0.0 && std::isfinite(settings_.sleep.bands))) {
-    throw std::invalid_argument("sleep time (s), bands and tolerance must be finite and >= 0");
+        settings_.sleep.bands >= 0.0 && std::isfinite(settings_.sleep.bands) &&
+        settings_.sleep.soft_bands >= 0.0 && std::isfinite(settings_.sleep.soft_bands) &&
+        settings_.sleep.soft_tolerance >= 0.0 && std::isfinite(settings_.sleep.soft_tolerance) &&
+        settings_.sleep.soft_windows >= 1)) {
+    throw std::invalid_argument(
+        "sleep time (s), bands and tolerance (soft ones too) must be finite and >= 0, and "
+        "soft_windows >= 1");
   }
 }
 
@@ -199,14 +204,16 @@ void World::rest_at_mid_step(const std::vector<ContactManifold>& manifolds, doub
   rested_.clear();
   if (!settings_.mid_step_rest || rest_withdrawn_) return;
   rest_step_ = h;
-  // With the soft solve, its islands (soft_rest_island and up) rest softly and the rest by the
-  // mid-step solve; islands share no pair of moving bodies, so the two never meet.
+  // With the soft solve, its islands (soft_rest_island and up, bands wide enough for its
+  // springs) rest softly and the rest by the mid-step solve; islands share no pair of moving
+  // bodies, so the two never meet.
   std::span<const std::uint8_t> hard_moves = moving_;
   std::vector<RestedPair> soft_rested;
   std::vector<std::uint8_t> hard_only;
   if (settings_.soft_rest_substeps > 0) {
     const std::vector<std::uint8_t> soft_moves =
-        soft_rest_movers(moving_, manifolds, settings_.soft_rest_island);
+        soft_rest_movers(moving_, manifolds, settings_.soft_rest_island,
+                         soft_rest_min_band(settings_.gravity, settings_.soft_rest_hertz));
     SoftRestSettings soft;
     soft.gravity = settings_.gravity;
     soft.friction_gain = settings_.friction_gain;
@@ -445,7 +452,7 @@ void World::advance_to(double t) {
     step(h);
     // Land exactly on t rather than a rounding short of it.
     time_ = h == remaining ? t : time_ + h;
-    stats_.islands_slept += sleep_.update(bodies_, manifolds_, near_pairs_, time_);
+    stats_.islands_slept += sleep_.update(bodies_, manifolds_, near_pairs_, rested_, time_);
   }
   stats_.sim_time = time_;
   profile_.stepping +=

@@ -121,14 +121,15 @@ struct WorldSettings {
   int rest_sweeps = 64;
   // Substeps of the soft resting solve (soft_rest.h) that then replaces the hard mid-step solve,
   // and the slow approaches of its pairs stop without a hop; 0 keeps the hard solve. Needs
-  // mid_step_rest. A pile rests within half a band under it, so the `soft_rest` accuracy knob
-  // also makes the sleep test stricter (with_accuracy, accuracy.h).
+  // mid_step_rest. A pile rests within a fifth of a band under it, so its bodies are judged by
+  // the sleep test's stricter soft windows (SleepSettings::soft_bands).
   int soft_rest_substeps = 0;
   double soft_rest_hertz = 60.0;  // Hz, its contact spring (SoftRestSettings::hertz)
   // The soft solve takes only the islands of at least this many moving bodies linked by
-  // contacts (soft_rest_movers); smaller ones keep the mid-step solve, whose rest is exact where
-  // it converges (a lone body on a slope does not creep at all).
-  int soft_rest_island = 1;
+  // contacts whose bands are wide enough for its springs (soft_rest_movers); the others keep the
+  // mid-step solve, whose rest is exact where it converges (a lone body on a slope does not
+  // creep at all).
+  int soft_rest_island = 2;
   // s: bisection stops below this step. 1e-9 s at 10 m/s is 10 nm, below the minimum band
   // (1e-6 of a 1 m body), so a contact is normally caught before the bound is reached.
   double min_step = 1e-9;

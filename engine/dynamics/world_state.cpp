@@ -14,7 +14,8 @@
 namespace rugosim {
 namespace {
 
-constexpr std::uint64_t kStateFormat = 3;  // 2: the fallbacks in a row; 3: soft-rest impulses
+// 2: the fallbacks in a row; 3: soft-rest impulses; 4: the sleep test's soft windows
+constexpr std::uint64_t kStateFormat = 4;
 
 void write_vec(ByteWriter& out, const Vec2& v) {
   out.f64(v.x());

@@ -25,9 +25,11 @@ namespace {
 
 using testing::scientific;
 
+// Every island rests softly (soft_rest_island 1), lone bodies too, so that one body shows it.
 WorldSettings soft_settings(int substeps = 8, int threads = 1) {
   Accuracy accuracy;
   accuracy.soft_rest = substeps;
+  accuracy.soft_rest_island = 1;
   WorldSettings base;
   base.threads = threads;
   return with_accuracy(base, accuracy);
@@ -105,6 +107,33 @@ TEST(SoftRestMovers, TakeTheMovingBodiesOfIslandsOfAtLeastTheGivenSize) {
   EXPECT_EQ(soft_rest_movers(moves, manifolds, 4), std::vector<std::uint8_t>(8, 0));
 }
 
+// An island with a contact narrower than min_band (σ = 0 bodies: their band is the minimum
+// one) keeps the mid-step solve whole, even where its other contacts are wide; a fixed body's
+// contact counts for the island it touches.
+TEST(SoftRestMovers, LeaveIslandsWithANarrowContactToTheMidStepSolve) {
+  const auto pair = [](std::size_t a, std::size_t b, double band) {
+    ContactManifold m;
+    m.body_a = a;
+    m.body_b = b;
+    Contact c;
+    c.lambda_a = 0.5 * band;
+    c.lambda_b = 0.5 * band;
+    m.contacts.push_back(c);
+    return m;
+  };
+  // 0 is fixed. Island 1–2 (wide), island 3–4 (3–4 narrow), island 5–6 (5 on the floor narrow).
+  const std::vector<std::uint8_t> moves = {0, 1, 1, 1, 1, 1, 1};
+  const std::vector<ContactManifold> manifolds = {pair(0, 1, 1e-3), pair(0, 3, 1e-3),
+                                                  pair(0, 5, 1e-5), pair(1, 2, 1e-3),
+                                                  pair(3, 4, 1e-5), pair(5, 6, 1e-3)};
+  EXPECT_EQ(soft_rest_movers(moves, manifolds, 2, 1e-4),
+            (std::vector<std::uint8_t>{0, 1, 1, 0, 0, 0, 0}));
+  EXPECT_EQ(soft_rest_movers(moves, manifolds, 1, 1e-6), moves);
+  EXPECT_EQ(soft_rest_movers(moves, manifolds, 1, 1e-2), std::vector<std::uint8_t>(7, 0));
+  // 60 Hz under 9.81 m/s²: ten times the spring's sag g/ω² (0.069 mm), 0.69 mm.
+  EXPECT_NEAR(soft_rest_min_band(Vec2(0.0, -9.81), 60.0), 6.9e-4, 1e-6);
+}
+
 TEST(SoftRest, NeedsTheMidStepRestItReplaces) {
   Accuracy accuracy;
   accuracy.soft_rest = 8;
@@ -113,7 +142,7 @@ TEST(SoftRest, NeedsTheMidStepRestItReplaces) {
   accuracy.mid_step_rest = 1;
   const WorldSettings settings = with_accuracy(WorldSettings{}, accuracy);
   EXPECT_EQ(settings.soft_rest_substeps, 8);
-  EXPECT_EQ(settings.sleep.bands, 0.5) << "the stricter sleep test goes with it";
+  EXPECT_EQ(settings.soft_rest_island, 2) << "lone bodies keep the mid-step solve by default";
 }
 
 // A rough disk dropped on a rough floor lands, rests within its band, and sleeps; asleep it
