@@ -114,10 +114,11 @@ std::vector<std::uint8_t> soft_rest_movers(std::span<const std::uint8_t> moves,
                                            std::span<const ContactManifold> manifolds,
                                            int min_island, double min_band = 0.0);
 
-// m: the narrowest band the soft solve takes. Under a load its spring sits g/ω² deeper than its
-// rest depth (ω = 2π·hertz; 0.07 mm at 60 Hz, so 0.69 mm). A band ten times that holds the sag, the
-// damping's overshoot and the hops of the pairs around it; a narrower one (bodies of σ = 0,
-// whose band is the minimum band) rests by the mid-step solve, which needs no room. §8.18.
+// m: the narrowest band the soft solve takes, 10·g/ω² (ω = 2π·hertz; 0.69 mm at 60 Hz). Under
+// a load its spring sits g/ω² (0.07 mm) deeper than its rest depth; a band ten times that holds
+// the sag, the damping's overshoot and the hops of the pairs around it. A narrower one (bodies
+// of σ = 0, whose band is the minimum band) rests by the mid-step solve, which needs no room.
+// §8.18 of docs/research/resting-contact.md.
 double soft_rest_min_band(const Vec2& gravity, double hertz);
 
 // One rest step of length h (s) for the contacts of `manifolds` (pairs in contact only) between
