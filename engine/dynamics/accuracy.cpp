@@ -112,6 +112,7 @@ std::optional<Accuracy> accuracy_preset(std::string_view name) {
     return Accuracy{.max_step = 2.5e-4,
                     .rest_stride = 1,
                     .converging_contacts = 1,
+                    .soft_rest = 0,
                     .toi_tolerance = 1e-10,
                     .max_bisections = 80,
                     .newton_tolerance = 1e-13,
@@ -135,10 +136,6 @@ WorldSettings with_accuracy(WorldSettings base, const Accuracy& accuracy) {
     throw std::invalid_argument("accuracy: toi_tolerance (" + number_text(accuracy.toi_tolerance) +
                                 " s) must not exceed max_step (" + number_text(accuracy.max_step) +
                                 " s)");
-  }
-  if (accuracy.soft_rest > 0 && accuracy.mid_step_rest == 0) {
-    throw std::invalid_argument(
-        "accuracy: soft_rest replaces the mid-step solve, so it needs mid_step_rest 1");
   }
   base.max_step = accuracy.max_step;
   base.rest_stride = accuracy.rest_stride;

@@ -42,9 +42,11 @@ struct Accuracy {
   // place of the mid-step solve, 0 for none: Box2D v3's soft contacts with warm starts, in n
   // substeps of each rest step, under which a pile comes to rest within a fifth of a band and
   // sleeps (its bodies are judged by the sleep test's stricter soft windows, sleep_tracker.h).
-  // 0 in every preset for now (docs/research/resting-contact.md §8.18: a stack of two boxes
-  // keeps rocking under it).
-  int soft_rest = 0;
+  // It replaces the mid-step solve, so with mid_step_rest 0 it does nothing. 8 in `draft` and
+  // `normal` (a 200-body pile asleep by 4 s, where the mid-step solve keeps it creeping: docs/
+  // research/resting-contact.md §8.18–8.19); 0 in `precise`, whose rest is the mid-step solve's,
+  // exact where it converges.
+  int soft_rest = 8;
   // Hz: the soft contacts' spring (SoftRestSettings::hertz).
   double soft_rest_hertz = 60.0;
   // With soft_rest: the smallest island (moving bodies linked by contacts) it takes; smaller

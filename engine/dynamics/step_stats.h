@@ -47,6 +47,9 @@ struct StepStats {
   std::uint64_t rest_unconverged = 0;
   // Steps whose crossing island went on without its mid-step impulses (World::step).
   std::uint64_t rest_withdrawn = 0;
+  // Rest steps whose soft solve left a body moving faster than the step allows (World::step):
+  // the step was halved and solved again.
+  std::uint64_t soft_rest_retries = 0;
   // Awake movable bodies summed over the steps: the work a step's cost grows with (wall time
   // per body-step compares scenes of different sizes).
   std::uint64_t body_steps = 0;

@@ -107,6 +107,7 @@ std::string stats_json(const StepStats& s, double wall_time, const Accuracy* acc
   counter("rest_sweeps", s.rest_sweeps);
   counter("rest_unconverged", s.rest_unconverged);
   counter("rest_withdrawn", s.rest_withdrawn);
+  counter("soft_rest_retries", s.soft_rest_retries);
   counter("body_steps", s.body_steps);
   out.append("  \"sim_time\": ");
   append_number(out, s.sim_time);

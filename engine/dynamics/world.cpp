@@ -252,6 +252,42 @@ void World::rest_at_mid_step(const std::vector<ContactManifold>& manifolds, doub
 void World::rest_and_place(const std::vector<ContactManifold>& manifolds, double h) {
   end_velocities_.clear();
   rest_at_mid_step(manifolds, h);
+  place_rested(h);
+}
+
+double World::rest_for_step(double h) {
+  end_velocities_.clear();
+  if (settings_.soft_rest_substeps == 0 || !settings_.mid_step_rest || h <= settings_.max_step) {
+    rest_at_mid_step(manifolds_, h);
+    return h;
+  }
+  // A rest step was granted on the velocities before the solve (StepPlanner::gentle_step); the
+  // soft solve's push can pivot a body so that a far corner then moves further than the step
+  // allows (a two-box stack rocked so, research §8.18). Such a step is solved again, halved.
+  const SoftRestMemory kept = soft_memory_;
+  const double g = settings_.gravity.norm();
+  for (;;) {
+    rest_at_mid_step(manifolds_, h);
+    if (h <= settings_.max_step) return h;
+    const bool gentle =
+        std::all_of(end_velocities_.begin(), end_velocities_.end(), [&](const EndVelocity& e) {
+          // The body's placement velocity (soft_rest.h) sweeps its whole move over h; the pair
+          // limit gentle_step grants it against a body of its own bands.
+          const RigidBody& b = bodies_[e.body];
+          return b.boundary_speed() * h + 0.5 * g * h * h <=
+                 kRestBandShare * 2.0 * b.shape().least_band();
+        });
+    if (gentle) return h;
+    ++stats_.soft_rest_retries;
+    for (const std::size_t i : members_)
+      bodies_[i].set_state(before_rest_[i]);
+    soft_memory_ = kept;
+    end_velocities_.clear();
+    h = std::max(settings_.max_step, 0.5 * h);
+  }
+}
+
+void World::place_rested(double h) {
   save_start();
   place_at(h);
   for (const EndVelocity& e : end_velocities_) {
@@ -262,7 +298,7 @@ void World::rest_and_place(const std::vector<ContactManifold>& manifolds, double
   }
 }
 
-void World::step(double h) {
+double World::step(double h) {
   std::vector<std::size_t> movers;
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     if (!bodies_[i].fixed() && !sleep_.asleep(i)) movers.push_back(i);
@@ -276,7 +312,8 @@ void World::step(double h) {
       before_rest_[i] = bodies_[i].state();
   }
   mark_start_contacts(manifolds_, /*new_step=*/true);
-  rest_and_place(manifolds_, h);
+  h = rest_for_step(h);
+  place_rested(h);
   detect();
   std::vector<BodyPairKey> arriving;
   if (!overshoots(detected_, &arriving)) {
@@ -285,7 +322,7 @@ void World::step(double h) {
     std::swap(manifolds_, detected_);
     std::swap(near_pairs_, detected_pairs_);
     resolve(manifolds_, time_ + h);
-    return;
+    return h;
   }
 
   // Islands of the trial: movers linked by near pairs. Those holding a crossing back off
@@ -369,6 +406,7 @@ void World::step(double h) {
   std::sort(near_pairs_.begin(), near_pairs_.end(), [](const BodyPair& x, const BodyPair& y) {
     return std::tie(x.a, x.b) < std::tie(y.a, y.b);
   });
+  return h;
 }
 
 bool World::near_anything() const {
@@ -448,8 +486,7 @@ void World::advance_to(double t) {
       break;
     }
     const double remaining = t - time_;
-    const double h = next_step(remaining);
-    step(h);
+    const double h = step(next_step(remaining));
     // Land exactly on t rather than a rounding short of it.
     time_ = h == remaining ? t : time_ + h;
     stats_.islands_slept += sleep_.update(bodies_, manifolds_, near_pairs_, rested_, time_);

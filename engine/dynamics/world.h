@@ -120,10 +120,11 @@ struct WorldSettings {
   // (counted in StepStats::rest_unconverged): what is left is answered by micro-collisions.
   int rest_sweeps = 64;
   // Substeps of the soft resting solve (soft_rest.h) that then replaces the hard mid-step solve,
-  // and the slow approaches of its pairs stop without a hop; 0 keeps the hard solve. Needs
-  // mid_step_rest. A pile rests within a fifth of a band under it, so its bodies are judged by
-  // the sleep test's stricter soft windows (SleepSettings::soft_bands).
-  int soft_rest_substeps = 0;
+  // and the slow approaches of its pairs stop without a hop; 0 keeps the hard solve. Without
+  // mid_step_rest neither solve runs. A pile rests within a fifth of a band under it, so its
+  // bodies are judged by the sleep test's stricter soft windows (SleepSettings::soft_bands); a
+  // rest step it leaves too fast is halved (World::rest_for_step).
+  int soft_rest_substeps = 8;
   double soft_rest_hertz = 60.0;  // Hz, its contact spring (SoftRestSettings::hertz)
   // The soft solve takes only the islands of at least this many moving bodies linked by
   // contacts whose bands are wide enough for its springs (soft_rest_movers); the others keep the
@@ -247,8 +248,9 @@ class World {
   // The next step's length, at most `remaining` (s): all of it while nothing can meet, else
   // max_step cut so that nothing can tunnel (step_planner.h; never below min_step).
   double next_step(double remaining);
-  // One step of exactly h (s) for every awake movable body (islands that cross back off alone).
-  void step(double h);
+  // One step of h (s) for every awake movable body (islands that cross back off alone); returns
+  // the step taken: h, or less when a soft rest asked for less (rest_for_step).
+  double step(double h);
   // Marks as crossing (crossing_root, per island root) every island of the trial with a body
   // that a backing-off body could reach anywhere between its start and its trial place, while
   // that island would be held at its trial place: a backed-off island must never meet a body
@@ -294,6 +296,13 @@ class World {
   // Rests them so, saves the members' start and places them at h; after a soft rest each body it
   // touched takes the substeps' last velocities (soft_rest.h).
   void rest_and_place(const std::vector<ContactManifold>& manifolds, double h);
+  // rest_at_mid_step from manifolds_ for a step of h (s), and the step to take: h, or for a rest
+  // step (over max_step) after which a softly rested body moves further than a rest step
+  // allows, the first halving of it (max_step at least) that the solve keeps gentle, solved
+  // again from the members' state before (counted in soft_rest_retries).
+  double rest_for_step(double h);
+  // The second half of rest_and_place: saves the start and places the members at h (s).
+  void place_rested(double h);
   // Impulses for the manifolds of an accepted state at `time` (s), and the step statistics.
   void resolve(const std::vector<ContactManifold>& manifolds, double time);
   // Sets first_crossing_ from the first intersecting pair of `manifolds` (an accepted state).

@@ -14,8 +14,9 @@
 namespace rugosim {
 namespace {
 
-// 2: the fallbacks in a row; 3: soft-rest impulses; 4: the sleep test's soft windows
-constexpr std::uint64_t kStateFormat = 4;
+// 2: the fallbacks in a row; 3: soft-rest impulses; 4: the sleep test's soft windows; 5: the
+// soft rest's retried steps
+constexpr std::uint64_t kStateFormat = 5;
 
 void write_vec(ByteWriter& out, const Vec2& v) {
   out.f64(v.x());
@@ -127,6 +128,7 @@ void visit_stats(Stats& s, Count&& count, Real&& real) {
                   &s.rest_sweeps,
                   &s.rest_unconverged,
                   &s.rest_withdrawn,
+                  &s.soft_rest_retries,
                   &s.body_steps})
     count(*c);
   real(s.stalled_time);

@@ -134,15 +134,26 @@ TEST(SoftRestMovers, LeaveIslandsWithANarrowContactToTheMidStepSolve) {
   EXPECT_NEAR(soft_rest_min_band(Vec2(0.0, -9.81), 60.0), 6.9e-4, 1e-6);
 }
 
-TEST(SoftRest, NeedsTheMidStepRestItReplaces) {
+// soft_rest replaces the mid-step solve: with mid_step_rest 0 (micro-collisions alone) neither
+// runs, so a scene that turns the mid-step solve off in `normal` keeps its meaning. A resting
+// disk then hops on micro-collisions and nothing is softly rested.
+TEST(SoftRest, ReplacesTheMidStepRestAndIsOffWithIt) {
   Accuracy accuracy;
-  accuracy.soft_rest = 8;
-  accuracy.mid_step_rest = 0;
-  EXPECT_THROW(with_accuracy(WorldSettings{}, accuracy), std::invalid_argument);
-  accuracy.mid_step_rest = 1;
+  EXPECT_EQ(accuracy.soft_rest, 8) << "normal rests softly";
+  EXPECT_EQ(accuracy_preset("draft")->soft_rest, 8);
+  EXPECT_EQ(accuracy_preset("precise")->soft_rest, 0) << "precise keeps the exact solve";
   const WorldSettings settings = with_accuracy(WorldSettings{}, accuracy);
   EXPECT_EQ(settings.soft_rest_substeps, 8);
   EXPECT_EQ(settings.soft_rest_island, 2) << "lone bodies keep the mid-step solve by default";
+  accuracy.mid_step_rest = 0;
+  accuracy.soft_rest_island = 1;  // the lone disk would be softly rested, were the solve on
+  World world(with_accuracy(WorldSettings{}, accuracy));
+  world.add_body(testing::floor_block(3.0, 0.3, 0.0, testing::make_material(0.3, 0.5), 1e-3));
+  world.add_body(testing::disk(0.2, 48, Vec2(0.0, 0.201), Vec2::Zero(),
+                               testing::make_material(0.3, 0.5), 1e-3));
+  world.advance_to(0.5);
+  EXPECT_EQ(world.stats().rest_contacts, 0u);
+  EXPECT_GT(world.stats().contacts, 0u) << "resting by micro-collisions";
 }
 
 // A rough disk dropped on a rough floor lands, rests within its band, and sleeps; asleep it
