@@ -49,6 +49,9 @@ std::vector<Setting> settings() {
       {"mid_step_rest", {0}},
       {"converging_contacts", {1}},
       {"rest_sweeps", {8, 16, 256}},
+      {"soft_rest", {4, 8, 16}},
+      {"soft_rest_hertz", {30, 120}},
+      {"soft_rest_island", {1}},
       {"toi_tolerance", {1e-5, 1e-7, 1e-11}},
       {"max_bisections", {8, 20}},
       {"newton_tolerance", {1e-6, 1e-9, 1e-14}},
@@ -58,7 +61,12 @@ std::vector<Setting> settings() {
       {"contact_threshold", {5e-2, 1e-2, 1e-4, 0.0}},
   };
   for (const AccuracyKnob& knob : accuracy_knobs()) {
-    for (const double value : sweeps.at(std::string(knob.key))) {
+    const auto sweep = sweeps.find(std::string(knob.key));
+    if (sweep == sweeps.end()) {
+      throw std::logic_error(
+          fmt::format("accuracy_study: no values to try for the knob {}", knob.key));
+    }
+    for (const double value : sweep->second) {
       Accuracy a;
       knob.set(a, value);
       out.push_back({fmt::format("{}={:g}", knob.key, value), std::string(knob.key), value, a});

@@ -65,6 +65,18 @@ TEST(ObservedOrder, IsTheSlopeOfLogErrorAgainstLogStepInsideTheRange) {
   EXPECT_TRUE(std::isnan(observed_order(steps, {1e-3, 1e-8, 1e-9, 1e-8, 1e-10}, 5e-4, 8e-3)));
 }
 
+// The method's limit is the paper's model at its tightest: every knob at its finest, contacts
+// at rest by the exact mid-step solve, not by normal's soft springs (docs/research/
+// resting-contact.md §8.19: the study's reference once took the soft solve from the defaults).
+TEST(FinestAt, IsTheExactModelAtTheGivenStep) {
+  const Accuracy finest = finest_at(2.5e-4);
+  EXPECT_EQ(finest.max_step, 2.5e-4);
+  EXPECT_EQ(finest.soft_rest, 0);
+  EXPECT_EQ(finest.mid_step_rest, 1);
+  EXPECT_EQ(finest.converging_contacts, 1);
+  EXPECT_EQ(finest.rest_stride, 1);
+}
+
 TEST(Monotone, AllowsTheToleranceAndRoundingButNotARise) {
   int rise = 0;
   EXPECT_TRUE(decreases_monotonically({1.0, 0.5, 0.54, 0.2}, 0.1, &rise));
