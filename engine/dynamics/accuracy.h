@@ -45,9 +45,9 @@ struct Accuracy {
   // It replaces the mid-step solve, so with mid_step_rest 0 it does nothing. Not a finer or
   // coarser setting but another resting model. 0 in every preset for now (docs/research/
   // resting-contact.md §8.19): under it the 200-body pile sleeps by 4 s within a band, but the
-  // 1,000-body pile, whose lower contacts carry thirty bodies, keeps flowing by about 1 cm per
-  // quarter second and never sleeps, where the mid-step solve puts it to sleep at 2.5 s; and
-  // `draft`'s 2 ms steps put the springs at the edge of their substeps.
+  // 1,000-body pile keeps flowing by about 1 cm per quarter second (as fast at three times the
+  // friction) and does not sleep in 10 s, where the mid-step solve puts it to sleep at 2.5 s;
+  // and `draft`'s 2 ms steps put the springs at the edge of their substeps.
   int soft_rest = 0;
   // Hz: the soft contacts' spring (SoftRestSettings::hertz).
   double soft_rest_hertz = 60.0;
