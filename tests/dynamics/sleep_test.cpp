@@ -136,12 +136,15 @@ TEST_P(SleepWithRest, TouchWakesTheWholeIslandAndItSleepsAgain) {
   EXPECT_EQ(world.stats().crossings, 0u);
   EXPECT_EQ(world.stats().fallbacks, 0u);
   RecordProperty("soft_rest_retries", std::to_string(world.stats().soft_rest_retries));
-  if (GetParam() == 0) EXPECT_EQ(world.stats().soft_rest_retries, 0u);
+  if (GetParam() == 0) {
+    EXPECT_EQ(world.stats().soft_rest_retries, 0u);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Rests, SleepWithRest, ::testing::Values(0, 8),
-                         [](const ::testing::TestParamInfo<int>& info) {
-                           return info.param == 0 ? std::string("MidStep") : std::string("Soft");
+                         [](const ::testing::TestParamInfo<int>& substeps) {
+                           return substeps.param == 0 ? std::string("MidStep")
+                                                      : std::string("Soft");
                          });
 
 // Islands are independent: a disk resting at one end of the floor sleeps while another one
