@@ -46,8 +46,10 @@ struct SoftRestSettings {
   double friction_gain = 100.0;     // k, 1/m
   double rest_depth = MidStepRestSettings{}.rest_depth;
   int substeps = 8;  // Box2D v3 takes 4 per 60 Hz step; a rest step is up to 16 ms here
-  // Hz: the contact spring's frequency. 60 Hz (two Box2D defaults: its contact hertz is 30)
-  // left the 200-body pile still two seconds sooner than 30 Hz (§8.16).
+  // Hz: the contact spring's frequency (Box2D's contact hertz is 30). 60 Hz left the 200-body
+  // pile still two seconds sooner than 30 Hz (§8.16). A row that carries more than its spring
+  // holds within its band is made stiffer for its load (rest_softly, §8.20); a stiffer spring for
+  // every row left rocking bodies awake (one of the small piles at 120, 140 or 240 Hz).
   double hertz = 60.0;
   double damping_ratio = 10.0;  // Box2D v3's contact damping ratio: overdamped, no bounce back
   // No cap on the push apart (Box2D caps it at 3 m/s): a contact is never deeper than its band,
