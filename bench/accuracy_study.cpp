@@ -49,7 +49,7 @@ std::vector<Setting> settings() {
       {"mid_step_rest", {0}},
       {"converging_contacts", {1}},
       {"rest_sweeps", {8, 16, 256}},
-      {"soft_rest", {4, 8, 16}},
+      {"soft_rest", {0, 4, 16}},
       {"soft_rest_hertz", {30, 120}},
       {"soft_rest_island", {1}},
       {"toi_tolerance", {1e-5, 1e-7, 1e-11}},

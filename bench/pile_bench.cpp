@@ -15,8 +15,9 @@
 //
 // pile/normal_micro_collisions_* is normal as it was before the presets rested contacts at
 // mid-step (mid_step_rest 0, rest_stride 1: resting contact by the paper's micro-collisions
-// alone): what mid-step rest and the rest steps it allows save. pile/normal_soft_rest_* is
-// normal with the soft resting solve (the soft_rest knob, 8 substeps, and its stricter sleep).
+// alone): what mid-step rest and the rest steps it allows save. pile/normal_hard_rest_* is
+// normal with the exact mid-step solve in place of its soft one (soft_rest 0, as the preset was
+// before stop 45): what the soft solve, and the sleep it brings, save.
 //
 // Counters: wall_per_sim_s; ns_per_body_step, the wall time per awake body and step (how cost
 // grows with the work); detection_s, the collision detection's share (World::profile); asleep_at,
@@ -198,15 +199,15 @@ void register_all() {
         if (cpus == 1) break;
       }
     }
-    // The soft resting solve (the soft_rest knob, 8 substeps): piles that come to rest within
-    // a fifth of a band and sleep by the stricter test that goes with it.
+    // The exact mid-step solve in place of the preset's soft one (soft_rest 0): piles that keep
+    // creeping and seldom sleep.
     if (n <= 200) {
       for (const int threads : {1, cpus}) {
         const std::string suffix =
             std::to_string(threads) + (threads == 1 ? "_thread" : "_threads");
         RugosimRun run{"normal", threads, true};
-        run.soft_rest = 8;
-        add("pile/normal_soft_rest_" + suffix, n, repetitions,
+        run.soft_rest = 0;
+        add("pile/normal_hard_rest_" + suffix, n, repetitions,
             [run](benchmark::State& s) { pile_rugosim(s, run); });
         if (cpus == 1) break;
       }

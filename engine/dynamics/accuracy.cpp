@@ -101,6 +101,7 @@ std::optional<Accuracy> accuracy_preset(std::string_view name) {
   if (name == "draft") {
     return Accuracy{.max_step = 2e-3,
                     .rest_sweeps = 16,
+                    .soft_rest = 0,
                     .toi_tolerance = 1e-7,
                     .max_bisections = 30,
                     .newton_tolerance = 1e-9,
@@ -112,6 +113,7 @@ std::optional<Accuracy> accuracy_preset(std::string_view name) {
     return Accuracy{.max_step = 2.5e-4,
                     .rest_stride = 1,
                     .converging_contacts = 1,
+                    .soft_rest = 0,
                     .toi_tolerance = 1e-10,
                     .max_bisections = 80,
                     .newton_tolerance = 1e-13,

@@ -42,13 +42,14 @@ struct Accuracy {
   // place of the mid-step solve, 0 for none: Box2D v3's soft contacts with warm starts, in n
   // substeps of each rest step, under which a pile comes to rest within a fifth of a band and
   // sleeps (its bodies are judged by the sleep test's stricter soft windows, sleep_tracker.h).
-  // It replaces the mid-step solve, so with mid_step_rest 0 it does nothing. Not a finer or
-  // coarser setting but another resting model. 0 in every preset for now (docs/research/
-  // resting-contact.md §8.19): under it the 200-body pile sleeps by 4 s within a band, but the
-  // 1,000-body pile keeps flowing by about 1 cm per quarter second (as fast at three times the
-  // friction) and does not sleep in 10 s, where the mid-step solve puts it to sleep at 2.5 s;
-  // and `draft`'s 2 ms steps put the springs at the edge of their substeps.
-  int soft_rest = 0;
+  // It replaces the mid-step solve, so with mid_step_rest 0 it does nothing. 8 in `normal` (a
+  // 200-body pile asleep by 4 s within a band, where the mid-step solve lets it creep 15 bands;
+  // the 1,000-body pile asleep by 6.5 s once the springs are stiffened by their load:
+  // docs/research/resting-contact.md §8.18–8.20). 0 in `draft`, whose 2 ms steps put the soft
+  // springs at the edge of their substeps (the 200-body pile never slept, 6× slower), and in
+  // `precise`, whose rest is the mid-step solve's, exact where it converges. Not a finer or
+  // coarser setting but another resting model.
+  int soft_rest = 8;
   // Hz: the soft contacts' spring (SoftRestSettings::hertz).
   double soft_rest_hertz = 60.0;
   // With soft_rest: the smallest island (moving bodies linked by contacts) it takes; smaller

@@ -124,7 +124,7 @@ struct WorldSettings {
   // mid_step_rest neither solve runs. A pile rests within a fifth of a band under it, so its
   // bodies are judged by the sleep test's stricter soft windows (SleepSettings::soft_bands); a
   // rest step it leaves too fast is halved (World::rest_for_step).
-  int soft_rest_substeps = 0;
+  int soft_rest_substeps = 8;
   double soft_rest_hertz = 60.0;  // Hz, its contact spring (SoftRestSettings::hertz)
   // The soft solve takes only the islands of at least this many moving bodies linked by
   // contacts whose bands are wide enough for its springs (soft_rest_movers); the others keep the
