@@ -22,6 +22,21 @@ auto key_of(const SoftRestImpulse& x) {
 // half left the 200-body pile awake (§8.20).
 constexpr double kLoadSagShare = 0.25;
 
+// Box2D v3's soft constraint coefficients for a spring of `hertz` and `zeta` over a substep hs.
+struct Softness {
+  double bias_rate = 0.0;      // 1/s
+  double mass_scale = 1.0;     // of the effective mass
+  double impulse_scale = 0.0;  // of the accumulated impulse
+};
+
+Softness make_soft(double hertz, double zeta, double hs) {
+  const double omega = 2.0 * std::numbers::pi * hertz;
+  const double a1 = 2.0 * zeta + hs * omega;
+  const double a2 = hs * omega * a1;
+  const double a3 = 1.0 / (1.0 + a2);
+  return {omega / a1, a2 * a3, a3};
+}
+
 // One contact row: arms and masses taken once, the impulses accumulated over the substeps.
 struct Row {
   std::size_t a = 0;
@@ -39,22 +54,8 @@ struct Row {
   double room = 0.0;  // m, from its rest depth to the curves touching
   double normal_impulse = 0.0;
   double tangent_impulse = 0.0;
+  Softness soft;  // its spring past the rest depth over this step's substeps (rest_softly)
 };
-
-// Box2D v3's soft constraint coefficients for a spring of `hertz` and `zeta` over a substep hs.
-struct Softness {
-  double bias_rate = 0.0;      // 1/s
-  double mass_scale = 1.0;     // of the effective mass
-  double impulse_scale = 0.0;  // of the accumulated impulse
-};
-
-Softness make_soft(double hertz, double zeta, double hs) {
-  const double omega = 2.0 * std::numbers::pi * hertz;
-  const double a1 = 2.0 * zeta + hs * omega;
-  const double a2 = hs * omega * a1;
-  const double a3 = 1.0 / (1.0 + a2);
-  return {omega / a1, a2 * a3, a3};
-}
 
 struct Rows {
   std::vector<Row> rows;
@@ -99,8 +100,8 @@ Rows make_rows(std::span<const RigidBody> bodies, std::span<const std::uint8_t> 
       r.normal_mass = 1.0 / kn;
       r.tangent_mass = kt > 0.0 ? 1.0 / kt : 0.0;
       const double band = std::max(c.lambda_a + c.lambda_b, min_band);
-      r.gap = c.distance - (1.0 - settings.rest_depth) * band;
       r.room = (1.0 - settings.rest_depth) * band;
+      r.gap = c.distance - r.room;
       r.mu =
           contact_friction(body_a.friction_coefficient(c.segment_a, c.t_a, settings.friction_gain),
                            body_b.friction_coefficient(c.segment_b, c.t_b, settings.friction_gain));
@@ -146,11 +147,8 @@ struct Motion {
 
 // One Gauss-Seidel sweep over the rows; `biased` lets deep rows push apart (the soft sweep),
 // otherwise they only stop (the relax sweep).
-void sweep(std::vector<Row>& rows, Motion& motion, std::span<const Softness> softness, double hs,
-           bool biased) {
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    Row& r = rows[i];
-    const Softness& soft = softness[i];
+void sweep(std::vector<Row>& rows, Motion& motion, double hs, bool biased) {
+  for (Row& r : rows) {
     const double gap = motion.gap(r);
     double bias = 0.0;
     double mass_scale = 1.0;
@@ -158,9 +156,9 @@ void sweep(std::vector<Row>& rows, Motion& motion, std::span<const Softness> sof
     if (gap > 0.0) {
       bias = gap / hs;  // speculative: may close the gap within the substep
     } else if (biased) {
-      bias = soft.bias_rate * gap;
-      mass_scale = soft.mass_scale;
-      impulse_scale = soft.impulse_scale;
+      bias = r.soft.bias_rate * gap;
+      mass_scale = r.soft.mass_scale;
+      impulse_scale = r.soft.impulse_scale;
     }
     const double vn = motion.relative_velocity(r).dot(r.normal);
     const double normal =
@@ -333,15 +331,14 @@ SoftRestCounts rest_softly(std::span<RigidBody> bodies, std::span<const std::uin
   // remembered impulse) gets the spring that F alone would sag by kLoadSagShare of the room
   // between its rest depth and the curves touching, where that is stiffer; lighter rows keep
   // `hertz`, whose softness stills rocking bodies.
-  std::vector<Softness> softness(rows.size(), soft);
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const Row& r = rows[i];
+  for (Row& r : rows) {
+    r.soft = soft;
     const double load = r.normal_impulse / hs;  // N
     if (!(load > 0.0)) continue;
     const double omega = std::sqrt(load / (r.normal_mass * kLoadSagShare * r.room));
     const double hertz = omega / (2.0 * std::numbers::pi);
     if (hertz > settings.hertz)
-      softness[i] = make_soft(std::min(hertz, top_hertz), settings.damping_ratio, hs);
+      r.soft = make_soft(std::min(hertz, top_hertz), settings.damping_ratio, hs);
   }
   for (int k = 0; k < n; ++k) {
     for (std::size_t i = 0; i < nb; ++i) {
@@ -349,13 +346,13 @@ SoftRestCounts rest_softly(std::span<RigidBody> bodies, std::span<const std::uin
     }
     for (const Row& r : rows)
       motion.apply(r, r.normal_impulse * r.normal + r.tangent_impulse * r.tangent);
-    sweep(rows, motion, softness, hs, /*biased=*/true);
+    sweep(rows, motion, hs, /*biased=*/true);
     for (std::size_t i = 0; i < nb; ++i) {
       if (touched[i] == 0 || moves[i] == 0) continue;
       motion.displacement[i] += hs * motion.velocity[i];
       motion.turn[i] += hs * motion.spin[i];
     }
-    sweep(rows, motion, softness, hs, /*biased=*/false);
+    sweep(rows, motion, hs, /*biased=*/false);
   }
 
   // Only a step about as long as the remembered one replaces it: a short remainder's impulses
