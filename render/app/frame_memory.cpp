@@ -1,5 +1,9 @@
 #include "render/app/frame_memory.h"
 
+// Any C library header defines __GLIBC__ (through <features.h>); without one the test below is
+// always false and the thresholds were never set (measured: mallopt was not called until this).
+#include <cstdlib>
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
