@@ -55,6 +55,42 @@ double bound_with(const Side& inner, const Side& outer, const Vec2& c) {
   return std::sqrt(std::max(0.0, nearest_outer)) - std::sqrt(farthest_inner);
 }
 
+// The circles through a point p of a piece, tangent there to the line across `direction`, with
+// centres p + R·direction: a point x of the piece is inside the one of curvature k = 1/R when
+// ‖x − p‖² <= 2R·direction·(x − p), that is when k <= 2·direction·(x − p)/‖x − p‖² (never, when
+// direction·(x − p) <= 0). Over samples of the piece, and the limit at p itself where p is not an
+// end (the piece's own bend there), this gives the largest curvature of a circle that holds the
+// whole piece (`holds`) and the smallest of one that leaves it all outside (`clears`). They are
+// taken at samples: the bound computed with a circle is exact whatever circle it is, and a
+// circle chosen a little off only makes it lower.
+struct Fit {
+  double holds = std::numeric_limits<double>::infinity();    // 1/m; <= 0: nothing holds it
+  double clears = -std::numeric_limits<double>::infinity();  // 1/m
+};
+Fit fit_circles(const CubicSegment& piece, double at, double lo, double hi, const Vec2& p,
+                const Vec2& direction) {
+  constexpr int kSamples = 8;
+  Fit fit;
+  const auto take = [&](double k) {
+    fit.holds = std::min(fit.holds, k);
+    fit.clears = std::max(fit.clears, k);
+  };
+  for (int i = 0; i <= kSamples; ++i) {
+    const Vec2 v = piece.point(lo + (hi - lo) * (static_cast<double>(i) / kSamples)) - p;
+    const double v2 = v.squaredNorm();
+    // Samples at p say nothing (the limit below stands for them).
+    if (!(v2 > 1e-20 * (hi - lo) * (hi - lo) * piece.derivative(at).squaredNorm())) continue;
+    take(2.0 * direction.dot(v) / v2);
+  }
+  if (at > lo && at < hi) {
+    // The limit at p, along the piece: direction·x''/‖x'‖² (direction is normal to it there).
+    const Vec2 d1 = piece.derivative(at);
+    const double speed = d1.squaredNorm();
+    if (speed > 0.0) take(direction.dot(piece.second_derivative(at)) / speed);
+  }
+  return fit;
+}
+
 }  // namespace
 
 double circle_separation_bound(const CubicSegment& a, const CubicSegment& b, double s_ref,
@@ -65,29 +101,34 @@ double circle_separation_bound(const CubicSegment& a, const CubicSegment& b, dou
   const double d = r.norm();
   if (!(d > 0.0) || !std::isfinite(d)) return kNoBound;
   const Vec2 n = r / d;  // from B towards A
-  const Vec2 da = a.derivative(s_ref);
-  const Vec2 db = b.derivative(t_ref);
-  const double speed_a = da.squaredNorm();
-  const double speed_b = db.squaredNorm();
-  if (!(speed_a > 0.0) || !(speed_b > 0.0)) return kNoBound;
-  // Curvature of each piece bending away from the other (1/m): positive for a bump facing the
-  // other piece, negative for a dent.
-  const double bend_a = n.dot(a.second_derivative(s_ref)) / speed_a;
-  const double bend_b = -n.dot(b.second_derivative(t_ref)) / speed_b;
-  // The more curved bump goes inside; the circle's curvature lies between its bend and the
-  // other piece's bend towards it (the geometric mean when that one is a dent, else half).
-  const bool b_inside = bend_b >= bend_a;
-  const double inner_bend = b_inside ? bend_b : bend_a;
-  const double outer_towards = -(b_inside ? bend_a : bend_b);
-  if (!(inner_bend > 0.0) || outer_towards >= inner_bend) return kNoBound;
-  const double curvature =
-      outer_towards > 0.0 ? std::sqrt(inner_bend * outer_towards) : 0.5 * inner_bend;
-  const double radius = 1.0 / curvature;
-  if (!std::isfinite(radius)) return kNoBound;
   const Side side_a{&a, s0, s1};
   const Side side_b{&b, t0, t1};
-  if (b_inside) return bound_with(side_b, side_a, Vec2(pb - radius * n));
-  return bound_with(side_a, side_b, Vec2(pa + radius * n));
+  // A circle with one piece inside through its reference point and the other outside through
+  // its own: with A inside, the centre is pa + R·n and B must clear the circle of radius R + d
+  // about it; with B inside, pb − R·n and A must clear R + d. The circle is chosen from the
+  // pieces' whole shape (fit_circles), not only their bends at the reference points: a piece of
+  // a rough outline bends more or less along its length, and a piece whose reference point is
+  // one of its ends (where the nearest points leave the rectangle) needs no bend at all there.
+  // Where both fit, the radius between the two limits (their geometric mean) leaves both
+  // pieces room; the bound is then the distance itself.
+  double best = kNoBound;
+  const auto try_inside = [&](const Side& inner, double inner_at, const Vec2& p_inner,
+                              const Side& outer, double outer_at, const Vec2& p_outer,
+                              const Vec2& out) {
+    // `out` points from the inner piece's reference point towards the centre.
+    const Fit in = fit_circles(*inner.piece, inner_at, inner.lo, inner.hi, p_inner, out);
+    if (!(in.holds > 0.0) || !std::isfinite(in.holds)) return;
+    const Fit around = fit_circles(*outer.piece, outer_at, outer.lo, outer.hi, p_outer, out);
+    const double r_lo = 1.0 / in.holds;
+    const double r_hi =
+        around.clears > 0.0 ? 1.0 / around.clears - d : std::numeric_limits<double>::infinity();
+    if (!(r_hi >= r_lo)) return;
+    const double radius = std::isfinite(r_hi) ? std::sqrt(r_lo * r_hi) : 2.0 * r_lo;
+    best = std::max(best, bound_with(inner, outer, Vec2(p_inner + radius * out)));
+  };
+  try_inside(side_a, s_ref, pa, side_b, t_ref, pb, n);
+  if (best < d) try_inside(side_b, t_ref, pb, side_a, s_ref, pa, Vec2(-n));
+  return best;
 }
 
 }  // namespace rugosim

@@ -24,10 +24,12 @@ namespace rugosim {
 
 // A lower bound (m) of ‖a(s) − b(t)‖ over s in [s0, s1] and t in [t0, t1], from a circle centred
 // on the line through a(s_ref) and b(t_ref) (points of the rectangle, normally a local minimum of
-// the distance in it, where the bound is tight), with a radius between the two pieces'
-// curvatures there. −infinity when the pieces do not bend so that such a circle fits (both
-// straight, or the convex one flatter than the concave one); the caller then falls back on
-// other bounds or on smaller rectangles.
+// the distance in it, where the bound is tight), through one of them, that holds that piece and
+// leaves the other outside: its curvature is chosen from samples of both pieces over the
+// rectangle (and their bends at the reference points), so that a piece whose curvature changes
+// along it, or whose reference point is its end, still fits. −infinity when no such circle
+// fits (both straight, or the convex one flatter than the concave one); the caller then falls
+// back on other bounds or on smaller rectangles.
 double circle_separation_bound(const CubicSegment& a, const CubicSegment& b, double s_ref,
                                double t_ref, double s0, double s1, double t0, double t1);
 

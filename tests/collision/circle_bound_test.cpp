@@ -75,6 +75,36 @@ TEST(CircleBound, NearestPointsOfABumpInADentAreTheApexes) {
   EXPECT_NEAR(n.t_b, 0.5, 1e-7);
 }
 
+// A piece whose nearest point is its end, leaving the other piece there: a straight piece
+// rising from just above the bottom of a dent (curvature 10/m), as a rock's segment ends where
+// it rests in another's hollow. It has no bend to set a circle by, and the slab fails on the
+// dent; a circle through its end wide enough to hold it clears the dent, and certifies the end.
+// (Until 6 December this pair, and many like it in every pile, went to the chord search.)
+TEST(CircleBound, CertifiesAPieceLeavingTheOtherAtItsEnd) {
+  const CubicSegment dent = segment_from_bezier(parabola(0.2, 5.0, 0.5));  // apex (0, 0), t = ½
+  for (const double gap : {1e-6, 1e-3, 0.02}) {
+    const CubicSegment rising =
+        segment_from_bezier(testing::straight_polygon({0.0, gap}, {0.02, gap + 0.02}));
+    ASSERT_GE(sampled_minimum(rising, dent, 0.0, 1.0, 0.0, 1.0), gap - 1e-12)
+        << "the end over the apex should be the nearest point, gap " << gap;
+    const Vec2 n(0.0, 1.0);  // from the dent (B) towards the rising piece (A)
+    EXPECT_LT(separating_axis_bound(rising, dent, n, 0.0, 1.0, 0.0, 1.0), gap - 1e-5);
+    const double circle = circle_separation_bound(rising, dent, 0.0, 0.5, 0.0, 1.0, 0.0, 1.0);
+    EXPECT_LE(circle, gap);
+    EXPECT_GE(circle, gap - 1e-13) << "gap " << gap;
+    // Either way round, and from the other end of a reversed piece.
+    EXPECT_GE(circle_separation_bound(dent, rising, 0.5, 0.0, 0.0, 1.0, 0.0, 1.0), gap - 1e-13);
+    const CubicSegment falling =
+        segment_from_bezier(testing::straight_polygon({0.02, gap + 0.02}, {0.0, gap}));
+    EXPECT_GE(circle_separation_bound(falling, dent, 1.0, 0.5, 0.0, 1.0, 0.0, 1.0), gap - 1e-13);
+    // The nearest points of the pair come from the first descent, certified: the end and apex.
+    const NearestPoints near = nearest_points(rising, dent);
+    EXPECT_NEAR(near.distance, gap, 1e-15);
+    EXPECT_EQ(near.t_a, 0.0);
+    EXPECT_NEAR(near.t_b, 0.5, 1e-7);
+  }
+}
+
 // No bound where no circle fits: a bump flatter than the dent it faces (then the apexes are a
 // saddle, not a minimum), or two straight pieces.
 TEST(CircleBound, NoBoundWhereNoCircleFits) {
