@@ -155,7 +155,7 @@ void BodyPairCollider::collide(const CollisionShape& a, const Transform2& place_
     // and proving that is much cheaper than finding the nearest points exactly.
     const double widest_band = a.segment_band(pair.segment_a) + b.segment_band(pair.segment_b);
     const WithinThreshold within = nearest_points_within(seg_a, seg_b, widest_band, settings_);
-    const double zero = crossing_distance(seg_a, seg_b, settings_);
+    const double zero = within.crossing_distance;
     if (apart != nullptr) {
       // Apart means beyond the band and beyond "touching" (crossing_distance), which a pair
       // without rugosity and a coarse accuracy can have wider than its band.

@@ -266,6 +266,7 @@ WithinThreshold nearest_points_within(const CubicSegment& a, const CubicSegment&
   const double proof_level = std::max(threshold, tol.zero) + tol.accuracy;
   const bool may_prove = std::isfinite(threshold);
   WithinThreshold out;
+  out.crossing_distance = tol.zero;
   // Whether m is the global minimum: touching, or a certificate within the accuracy of it.
   const auto settled = [&](const LocalMinimum& m) {
     const double d = std::sqrt(m.distance2);

@@ -84,6 +84,8 @@ struct WithinThreshold {
   // when `nearest` is empty; within twice the accuracy below the distance when the nearest
   // points were certified.
   double lower_bound = -std::numeric_limits<double>::infinity();
+  // m: crossing_distance(a, b), which the search works out anyway (the caller needs it too).
+  double crossing_distance = 0.0;
 };
 
 // The same, for a caller that needs the nearest points only of pairs that come within

@@ -47,6 +47,12 @@ struct Row {
   Vec2 arm_b = Vec2::Zero();
   Vec2 normal = Vec2::Zero();
   Vec2 tangent = Vec2::Zero();
+  // The arms' moments along the normal and the tangent (cross(arm, direction)): a body's spin
+  // moves the contact point by them, and an impulse along the direction spins it by them.
+  double normal_arm_a = 0.0;
+  double normal_arm_b = 0.0;
+  double tangent_arm_a = 0.0;
+  double tangent_arm_b = 0.0;
   double normal_mass = 0.0;
   double tangent_mass = 0.0;
   double mu = 0.0;
@@ -89,13 +95,15 @@ Rows make_rows(std::span<const RigidBody> bodies, std::span<const std::uint8_t> 
       r.arm_b = c.point - body_b.state().position;
       r.normal = c.normal;
       r.tangent = perp(c.normal);
-      const auto effective = [&](const Vec2& direction) {
-        const double ra = cross(r.arm_a, direction);
-        const double rb = cross(r.arm_b, direction);
+      r.normal_arm_a = cross(r.arm_a, r.normal);
+      r.normal_arm_b = cross(r.arm_b, r.normal);
+      r.tangent_arm_a = cross(r.arm_a, r.tangent);
+      r.tangent_arm_b = cross(r.arm_b, r.tangent);
+      const auto effective = [&](double ra, double rb) {
         return inv_mass_a + inv_mass_b + inv_inertia_a * ra * ra + inv_inertia_b * rb * rb;
       };
-      const double kn = effective(r.normal);
-      const double kt = effective(r.tangent);
+      const double kn = effective(r.normal_arm_a, r.normal_arm_b);
+      const double kt = effective(r.tangent_arm_a, r.tangent_arm_b);
       if (!(kn > 0.0)) continue;
       r.normal_mass = 1.0 / kn;
       r.tangent_mass = kt > 0.0 ? 1.0 / kt : 0.0;
@@ -119,37 +127,34 @@ Rows make_rows(std::span<const RigidBody> bodies, std::span<const std::uint8_t> 
   return out;
 }
 
-// The substeps' working velocities, displacements and inverse masses (0 for what does not move).
-struct Motion {
-  std::vector<Vec2> velocity;
-  std::vector<double> spin;
-  std::vector<Vec2> displacement;
-  std::vector<double> turn;
-  std::vector<double> inv_mass;
-  std::vector<double> inv_inertia;
-
-  Vec2 relative_velocity(const Row& r) const {
-    return (velocity[r.a] + spin[r.a] * perp(r.arm_a)) -
-           (velocity[r.b] + spin[r.b] * perp(r.arm_b));
-  }
-  double gap(const Row& r) const {
-    const Vec2 moved_a = displacement[r.a] + turn[r.a] * perp(r.arm_a);
-    const Vec2 moved_b = displacement[r.b] + turn[r.b] * perp(r.arm_b);
-    return r.gap + r.normal.dot(moved_a - moved_b);
-  }
-  void apply(const Row& r, const Vec2& impulse) {
-    velocity[r.a] += inv_mass[r.a] * impulse;
-    spin[r.a] += inv_inertia[r.a] * cross(r.arm_a, impulse);
-    velocity[r.b] -= inv_mass[r.b] * impulse;
-    spin[r.b] -= inv_inertia[r.b] * cross(r.arm_b, impulse);
-  }
+// A body's working velocity, displacement and inverse mass over the substeps (0 for what does
+// not move), side by side so that a row touches one cache line per body.
+struct Mover {
+  Vec2 velocity = Vec2::Zero();
+  double spin = 0.0;
+  Vec2 displacement = Vec2::Zero();
+  double turn = 0.0;
+  double inv_mass = 0.0;
+  double inv_inertia = 0.0;
 };
+
+// The impulse p along a row's direction (unit, with the arms' moments arm_a and arm_b) on its
+// two bodies, equal and opposite.
+void push(Mover& a, Mover& b, const Vec2& direction, double arm_a, double arm_b, double p) {
+  a.velocity += (a.inv_mass * p) * direction;
+  a.spin += a.inv_inertia * p * arm_a;
+  b.velocity -= (b.inv_mass * p) * direction;
+  b.spin -= b.inv_inertia * p * arm_b;
+}
 
 // One Gauss-Seidel sweep over the rows; `biased` lets deep rows push apart (the soft sweep),
 // otherwise they only stop (the relax sweep).
-void sweep(std::vector<Row>& rows, Motion& motion, double hs, bool biased) {
+void sweep(std::vector<Row>& rows, std::vector<Mover>& movers, double hs, bool biased) {
   for (Row& r : rows) {
-    const double gap = motion.gap(r);
+    Mover& a = movers[r.a];
+    Mover& b = movers[r.b];
+    const double gap = r.gap + r.normal.dot(a.displacement - b.displacement) +
+                       a.turn * r.normal_arm_a - b.turn * r.normal_arm_b;
     double bias = 0.0;
     double mass_scale = 1.0;
     double impulse_scale = 0.0;
@@ -160,17 +165,19 @@ void sweep(std::vector<Row>& rows, Motion& motion, double hs, bool biased) {
       mass_scale = r.soft.mass_scale;
       impulse_scale = r.soft.impulse_scale;
     }
-    const double vn = motion.relative_velocity(r).dot(r.normal);
+    const double vn =
+        r.normal.dot(a.velocity - b.velocity) + a.spin * r.normal_arm_a - b.spin * r.normal_arm_b;
     const double normal =
         std::max(0.0, r.normal_impulse - r.normal_mass * mass_scale * (vn + bias) -
                           impulse_scale * r.normal_impulse);
-    motion.apply(r, (normal - r.normal_impulse) * r.normal);
+    push(a, b, r.normal, r.normal_arm_a, r.normal_arm_b, normal - r.normal_impulse);
     r.normal_impulse = normal;
     if (r.tangent_mass > 0.0) {
-      const double vt = motion.relative_velocity(r).dot(r.tangent);
+      const double vt = r.tangent.dot(a.velocity - b.velocity) + a.spin * r.tangent_arm_a -
+                        b.spin * r.tangent_arm_b;
       const double limit = r.mu * r.normal_impulse;
       const double tangent = std::clamp(r.tangent_impulse - r.tangent_mass * vt, -limit, limit);
-      motion.apply(r, (tangent - r.tangent_impulse) * r.tangent);
+      push(a, b, r.tangent, r.tangent_arm_a, r.tangent_arm_b, tangent - r.tangent_impulse);
       r.tangent_impulse = tangent;
     }
   }
@@ -309,16 +316,14 @@ SoftRestCounts rest_softly(std::span<RigidBody> bodies, std::span<const std::uin
   const std::vector<std::uint8_t>& touched = made.touched;
 
   const std::size_t nb = bodies.size();
-  Motion motion{std::vector<Vec2>(nb, Vec2::Zero()), std::vector<double>(nb, 0.0),
-                std::vector<Vec2>(nb, Vec2::Zero()), std::vector<double>(nb, 0.0),
-                std::vector<double>(nb, 0.0),        std::vector<double>(nb, 0.0)};
+  std::vector<Mover> movers(nb);
   for (std::size_t i = 0; i < nb; ++i) {
     if (touched[i] == 0) continue;
-    motion.velocity[i] = bodies[i].state().velocity;
-    motion.spin[i] = bodies[i].state().angular_velocity;
+    movers[i].velocity = bodies[i].state().velocity;
+    movers[i].spin = bodies[i].state().angular_velocity;
     if (moves[i] != 0) {
-      motion.inv_mass[i] = bodies[i].inverse_mass();
-      motion.inv_inertia[i] = bodies[i].inverse_inertia();
+      movers[i].inv_mass = bodies[i].inverse_mass();
+      movers[i].inv_inertia = bodies[i].inverse_inertia();
     }
   }
   // Stiffer than a quarter of the substep's rate, a spring would ring (Box2D caps it so too).
@@ -342,17 +347,21 @@ SoftRestCounts rest_softly(std::span<RigidBody> bodies, std::span<const std::uin
   }
   for (int k = 0; k < n; ++k) {
     for (std::size_t i = 0; i < nb; ++i) {
-      if (touched[i] != 0 && moves[i] != 0) motion.velocity[i] += hs * settings.gravity;
+      if (touched[i] != 0 && moves[i] != 0) movers[i].velocity += hs * settings.gravity;
     }
-    for (const Row& r : rows)
-      motion.apply(r, r.normal_impulse * r.normal + r.tangent_impulse * r.tangent);
-    sweep(rows, motion, hs, /*biased=*/true);
+    for (const Row& r : rows) {
+      Mover& a = movers[r.a];
+      Mover& b = movers[r.b];
+      push(a, b, r.normal, r.normal_arm_a, r.normal_arm_b, r.normal_impulse);
+      push(a, b, r.tangent, r.tangent_arm_a, r.tangent_arm_b, r.tangent_impulse);
+    }
+    sweep(rows, movers, hs, /*biased=*/true);
     for (std::size_t i = 0; i < nb; ++i) {
       if (touched[i] == 0 || moves[i] == 0) continue;
-      motion.displacement[i] += hs * motion.velocity[i];
-      motion.turn[i] += hs * motion.spin[i];
+      movers[i].displacement += hs * movers[i].velocity;
+      movers[i].turn += hs * movers[i].spin;
     }
-    sweep(rows, motion, hs, /*biased=*/false);
+    sweep(rows, movers, hs, /*biased=*/false);
   }
 
   // Only a step about as long as the remembered one replaces it: a short remainder's impulses
@@ -369,10 +378,10 @@ SoftRestCounts rest_softly(std::span<RigidBody> bodies, std::span<const std::uin
   for (std::size_t i = 0; i < nb; ++i) {
     if (touched[i] == 0 || moves[i] == 0) continue;
     BodyState s = bodies[i].state();
-    s.velocity = motion.displacement[i] / h - 0.5 * h * settings.gravity;
-    s.angular_velocity = motion.turn[i] / h;
+    s.velocity = movers[i].displacement / h - 0.5 * h * settings.gravity;
+    s.angular_velocity = movers[i].turn / h;
     bodies[i].set_state(s);
-    counts.end.push_back({i, motion.velocity[i], motion.spin[i]});
+    counts.end.push_back({i, movers[i].velocity, movers[i].spin});
   }
   return counts;
 }
