@@ -75,19 +75,16 @@ Fit fit_circles(const CubicSegment& piece, double at, double lo, double hi, cons
     fit.holds = std::min(fit.holds, k);
     fit.clears = std::max(fit.clears, k);
   };
+  const double speed = piece.derivative(at).squaredNorm();
   for (int i = 0; i <= kSamples; ++i) {
     const Vec2 v = piece.point(lo + (hi - lo) * (static_cast<double>(i) / kSamples)) - p;
     const double v2 = v.squaredNorm();
     // Samples at p say nothing (the limit below stands for them).
-    if (!(v2 > 1e-20 * (hi - lo) * (hi - lo) * piece.derivative(at).squaredNorm())) continue;
+    if (!(v2 > 1e-20 * (hi - lo) * (hi - lo) * speed)) continue;
     take(2.0 * direction.dot(v) / v2);
   }
-  if (at > lo && at < hi) {
-    // The limit at p, along the piece: direction·x''/‖x'‖² (direction is normal to it there).
-    const Vec2 d1 = piece.derivative(at);
-    const double speed = d1.squaredNorm();
-    if (speed > 0.0) take(direction.dot(piece.second_derivative(at)) / speed);
-  }
+  // The limit at p, along the piece: direction·x''/‖x'‖² (direction is normal to it there).
+  if (at > lo && at < hi && speed > 0.0) take(direction.dot(piece.second_derivative(at)) / speed);
   return fit;
 }
 
@@ -111,23 +108,24 @@ double circle_separation_bound(const CubicSegment& a, const CubicSegment& b, dou
   // one of its ends (where the nearest points leave the rectangle) needs no bend at all there.
   // Where both fit, the radius between the two limits (their geometric mean) leaves both
   // pieces room; the bound is then the distance itself.
+  // Both pieces' fits along n, once: along −n every ratio only changes sign, so what holds a
+  // piece there is minus what clears it along n, and the other way round (exactly, in floating
+  // point too).
+  const Fit fit_a = fit_circles(a, s_ref, s0, s1, pa, n);
+  const Fit fit_b = fit_circles(b, t_ref, t0, t1, pb, n);
   double best = kNoBound;
-  const auto try_inside = [&](const Side& inner, double inner_at, const Vec2& p_inner,
-                              const Side& outer, double outer_at, const Vec2& p_outer,
-                              const Vec2& out) {
+  const auto try_inside = [&](const Side& inner, double holds, const Vec2& p_inner,
+                              const Side& outer, double clears, const Vec2& out) {
     // `out` points from the inner piece's reference point towards the centre.
-    const Fit in = fit_circles(*inner.piece, inner_at, inner.lo, inner.hi, p_inner, out);
-    if (!(in.holds > 0.0) || !std::isfinite(in.holds)) return;
-    const Fit around = fit_circles(*outer.piece, outer_at, outer.lo, outer.hi, p_outer, out);
-    const double r_lo = 1.0 / in.holds;
-    const double r_hi =
-        around.clears > 0.0 ? 1.0 / around.clears - d : std::numeric_limits<double>::infinity();
+    if (!(holds > 0.0) || !std::isfinite(holds)) return;
+    const double r_lo = 1.0 / holds;
+    const double r_hi = clears > 0.0 ? 1.0 / clears - d : std::numeric_limits<double>::infinity();
     if (!(r_hi >= r_lo)) return;
     const double radius = std::isfinite(r_hi) ? std::sqrt(r_lo * r_hi) : 2.0 * r_lo;
     best = std::max(best, bound_with(inner, outer, Vec2(p_inner + radius * out)));
   };
-  try_inside(side_a, s_ref, pa, side_b, t_ref, pb, n);
-  if (best < d) try_inside(side_b, t_ref, pb, side_a, s_ref, pa, Vec2(-n));
+  try_inside(side_a, fit_a.holds, pa, side_b, fit_b.clears, n);
+  if (best < d) try_inside(side_b, -fit_b.clears, pb, side_a, -fit_a.holds, Vec2(-n));
   return best;
 }
 

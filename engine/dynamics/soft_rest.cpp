@@ -37,14 +37,13 @@ Softness make_soft(double hertz, double zeta, double hs) {
   return {omega / a1, a2 * a3, a3};
 }
 
-// One contact row: arms and masses taken once, the impulses accumulated over the substeps.
+// One contact row: arms' moments and masses taken once, the impulses accumulated over the
+// substeps.
 struct Row {
   std::size_t a = 0;
   std::size_t b = 0;
   std::size_t segment_a = 0;
   std::size_t segment_b = 0;
-  Vec2 arm_a = Vec2::Zero();
-  Vec2 arm_b = Vec2::Zero();
   Vec2 normal = Vec2::Zero();
   Vec2 tangent = Vec2::Zero();
   // The arms' moments along the normal and the tangent (cross(arm, direction)): a body's spin
@@ -91,14 +90,14 @@ Rows make_rows(std::span<const RigidBody> bodies, std::span<const std::uint8_t> 
       r.b = m.body_b;
       r.segment_a = c.segment_a;
       r.segment_b = c.segment_b;
-      r.arm_a = c.point - body_a.state().position;
-      r.arm_b = c.point - body_b.state().position;
+      const Vec2 arm_a = c.point - body_a.state().position;
+      const Vec2 arm_b = c.point - body_b.state().position;
       r.normal = c.normal;
       r.tangent = perp(c.normal);
-      r.normal_arm_a = cross(r.arm_a, r.normal);
-      r.normal_arm_b = cross(r.arm_b, r.normal);
-      r.tangent_arm_a = cross(r.arm_a, r.tangent);
-      r.tangent_arm_b = cross(r.arm_b, r.tangent);
+      r.normal_arm_a = cross(arm_a, r.normal);
+      r.normal_arm_b = cross(arm_b, r.normal);
+      r.tangent_arm_a = cross(arm_a, r.tangent);
+      r.tangent_arm_b = cross(arm_b, r.tangent);
       const auto effective = [&](double ra, double rb) {
         return inv_mass_a + inv_mass_b + inv_inertia_a * ra * ra + inv_inertia_b * rb * rb;
       };
@@ -147,6 +146,13 @@ void push(Mover& a, Mover& b, const Vec2& direction, double arm_a, double arm_b,
   b.spin -= b.inv_inertia * p * arm_b;
 }
 
+// How fast a row's contact point on A moves along `direction` relative to B's (arms' moments
+// arm_a and arm_b along it).
+double speed_along(const Mover& a, const Mover& b, const Vec2& direction, double arm_a,
+                   double arm_b) {
+  return direction.dot(a.velocity - b.velocity) + a.spin * arm_a - b.spin * arm_b;
+}
+
 // One Gauss-Seidel sweep over the rows; `biased` lets deep rows push apart (the soft sweep),
 // otherwise they only stop (the relax sweep).
 void sweep(std::vector<Row>& rows, std::vector<Mover>& movers, double hs, bool biased) {
@@ -165,16 +171,14 @@ void sweep(std::vector<Row>& rows, std::vector<Mover>& movers, double hs, bool b
       mass_scale = r.soft.mass_scale;
       impulse_scale = r.soft.impulse_scale;
     }
-    const double vn =
-        r.normal.dot(a.velocity - b.velocity) + a.spin * r.normal_arm_a - b.spin * r.normal_arm_b;
+    const double vn = speed_along(a, b, r.normal, r.normal_arm_a, r.normal_arm_b);
     const double normal =
         std::max(0.0, r.normal_impulse - r.normal_mass * mass_scale * (vn + bias) -
                           impulse_scale * r.normal_impulse);
     push(a, b, r.normal, r.normal_arm_a, r.normal_arm_b, normal - r.normal_impulse);
     r.normal_impulse = normal;
     if (r.tangent_mass > 0.0) {
-      const double vt = r.tangent.dot(a.velocity - b.velocity) + a.spin * r.tangent_arm_a -
-                        b.spin * r.tangent_arm_b;
+      const double vt = speed_along(a, b, r.tangent, r.tangent_arm_a, r.tangent_arm_b);
       const double limit = r.mu * r.normal_impulse;
       const double tangent = std::clamp(r.tangent_impulse - r.tangent_mass * vt, -limit, limit);
       push(a, b, r.tangent, r.tangent_arm_a, r.tangent_arm_b, tangent - r.tangent_impulse);
