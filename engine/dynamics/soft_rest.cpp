@@ -1,6 +1,8 @@
 #include "engine/dynamics/soft_rest.h"
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <tuple>
@@ -62,21 +64,42 @@ struct Row {
   Softness soft;  // its spring past the rest depth over this step's substeps (rest_softly)
 };
 
-struct Rows {
-  std::vector<Row> rows;
-  std::vector<std::uint8_t> touched;  // per body: in some row
-  std::vector<RestedPair> rested;
+// A body's working velocity, displacement and inverse mass over the substeps (0 for what does
+// not move), side by side so that a row touches one cache line per body.
+struct Mover {
+  Vec2 velocity = Vec2::Zero();
+  double spin = 0.0;
+  Vec2 displacement = Vec2::Zero();
+  double turn = 0.0;
+  double inv_mass = 0.0;
+  double inv_inertia = 0.0;
 };
 
-Rows make_rows(std::span<const RigidBody> bodies, std::span<const std::uint8_t> moves,
-               std::span<const ContactManifold> manifolds, const SoftRestSettings& settings,
-               const SoftRestMemory& memory, double carry) {
-  Rows out;
-  out.touched.assign(bodies.size(), 0);
+// A solve's working memory, kept from solve to solve by the thread that runs it: a pile's rows
+// take hundreds of kB, which fresh vectors zeroed, or took from the kernel, at every step.
+struct Workspace {
+  std::vector<Row> made;     // in the manifolds' order
+  std::vector<Row> ordered;  // the same rows by colour (order_by_colour); grows, never shrinks
+  std::vector<std::uint8_t> touched;  // per body: in some row
+  std::vector<std::uint64_t> used;    // per body: the colours its rows took (order_by_colour)
+  std::vector<std::uint8_t> colour;   // per made row
+  std::vector<Mover> movers;          // per body; only touched bodies' entries are set
+};
+
+// The rows of the contacts with a moving body, into work.made and work.touched; returns the
+// pairs they rest.
+std::vector<RestedPair> make_rows(std::span<const RigidBody> bodies,
+                                  std::span<const std::uint8_t> moves,
+                                  std::span<const ContactManifold> manifolds,
+                                  const SoftRestSettings& settings, const SoftRestMemory& memory,
+                                  double carry, Workspace& work) {
+  std::vector<RestedPair> rested;
+  work.made.clear();
+  work.touched.assign(bodies.size(), 0);
   for (const ContactManifold& m : manifolds) {
     if (m.state() != PairState::kContact) continue;
     if (moves[m.body_a] == 0 && moves[m.body_b] == 0) continue;
-    out.rested.push_back({m.body_a, m.body_b, 0.0, true});
+    rested.push_back({m.body_a, m.body_b, 0.0, true});
     const RigidBody& body_a = bodies[m.body_a];
     const RigidBody& body_b = bodies[m.body_b];
     const double inv_mass_a = moves[m.body_a] != 0 ? body_a.inverse_mass() : 0.0;
@@ -119,23 +142,12 @@ Rows make_rows(std::span<const RigidBody> bodies, std::span<const std::uint8_t> 
           r.tangent_impulse = std::clamp(carry * x->tangent, -limit, limit);
         }
       }
-      out.touched[r.a] = out.touched[r.b] = 1;
-      out.rows.push_back(r);
+      work.touched[r.a] = work.touched[r.b] = 1;
+      work.made.push_back(r);
     }
   }
-  return out;
+  return rested;
 }
-
-// A body's working velocity, displacement and inverse mass over the substeps (0 for what does
-// not move), side by side so that a row touches one cache line per body.
-struct Mover {
-  Vec2 velocity = Vec2::Zero();
-  double spin = 0.0;
-  Vec2 displacement = Vec2::Zero();
-  double turn = 0.0;
-  double inv_mass = 0.0;
-  double inv_inertia = 0.0;
-};
 
 // The impulse p along a row's direction (unit, with the arms' moments arm_a and arm_b) on its
 // two bodies, equal and opposite.
@@ -153,9 +165,43 @@ double speed_along(const Mover& a, const Mover& b, const Vec2& direction, double
   return direction.dot(a.velocity - b.velocity) + a.spin * arm_a - b.spin * arm_b;
 }
 
+// Rows reordered so that rows sharing a moving body fall apart: each takes the lowest colour
+// that neither of its moving bodies has yet (greedy, in the manifolds' order), and the rows go
+// colour by colour, in their order within a colour. A sweep's rows then depend on the row
+// before them only across a colour's edge, and the processor overlaps neighbouring rows
+// instead of waiting on each one's writes (Box2D v3 colours its constraints for the same
+// reason, and for SIMD). Rows beyond the last colour keep their order at the end.
+std::span<Row> order_by_colour(Workspace& work, std::span<const std::uint8_t> moves) {
+  constexpr std::size_t kColours = 64;
+  const std::vector<Row>& rows = work.made;
+  work.used.assign(moves.size(), 0);
+  work.colour.resize(rows.size());
+  std::array<std::size_t, kColours + 1> count{};
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const Row& r = rows[k];
+    const std::uint64_t taken =
+        (moves[r.a] != 0 ? work.used[r.a] : 0) | (moves[r.b] != 0 ? work.used[r.b] : 0);
+    const std::size_t c =
+        taken == ~std::uint64_t{0} ? kColours : static_cast<std::size_t>(std::countr_one(taken));
+    work.colour[k] = static_cast<std::uint8_t>(c);
+    ++count[c];
+    if (c < kColours) {
+      work.used[r.a] |= std::uint64_t{1} << c;
+      work.used[r.b] |= std::uint64_t{1} << c;
+    }
+  }
+  std::array<std::size_t, kColours + 1> first{};
+  for (std::size_t c = 1; c <= kColours; ++c)
+    first[c] = first[c - 1] + count[c - 1];
+  if (work.ordered.size() < rows.size()) work.ordered.resize(rows.size());
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    work.ordered[first[work.colour[k]]++] = rows[k];
+  return std::span<Row>(work.ordered.data(), rows.size());
+}
+
 // One Gauss-Seidel sweep over the rows; `biased` lets deep rows push apart (the soft sweep),
 // otherwise they only stop (the relax sweep).
-void sweep(std::vector<Row>& rows, std::vector<Mover>& movers, double hs, bool biased) {
+void sweep(std::span<Row> rows, std::span<Mover> movers, double hs, bool biased) {
   for (Row& r : rows) {
     Mover& a = movers[r.a];
     Mover& b = movers[r.b];
@@ -308,26 +354,29 @@ SoftRestCounts rest_softly(std::span<RigidBody> bodies, std::span<const std::uin
   // (a back-off's) says nothing about this one's: only up to twice its substep is carried.
   const double carry =
       memory.substep() > 0.0 && hs <= 2.0 * memory.substep() ? hs / memory.substep() : 0.0;
-  Rows made = make_rows(bodies, moves, manifolds, settings, memory, carry);
+  thread_local Workspace work;
   SoftRestCounts counts;
-  counts.rested = std::move(made.rested);
-  if (made.rows.empty()) {
+  counts.rested = make_rows(bodies, moves, manifolds, settings, memory, carry, work);
+  if (work.made.empty()) {
     memory.clear();
     return counts;
   }
-  counts.contacts = made.rows.size();
-  std::vector<Row>& rows = made.rows;
-  const std::vector<std::uint8_t>& touched = made.touched;
+  counts.contacts = work.made.size();
+  const std::span<Row> rows = order_by_colour(work, moves);
+  const std::vector<std::uint8_t>& touched = work.touched;
 
   const std::size_t nb = bodies.size();
-  std::vector<Mover> movers(nb);
+  if (work.movers.size() < nb) work.movers.resize(nb);
+  const std::span<Mover> movers(work.movers.data(), nb);
   for (std::size_t i = 0; i < nb; ++i) {
     if (touched[i] == 0) continue;
-    movers[i].velocity = bodies[i].state().velocity;
-    movers[i].spin = bodies[i].state().angular_velocity;
+    Mover& m = movers[i];
+    m = Mover{};
+    m.velocity = bodies[i].state().velocity;
+    m.spin = bodies[i].state().angular_velocity;
     if (moves[i] != 0) {
-      movers[i].inv_mass = bodies[i].inverse_mass();
-      movers[i].inv_inertia = bodies[i].inverse_inertia();
+      m.inv_mass = bodies[i].inverse_mass();
+      m.inv_inertia = bodies[i].inverse_inertia();
     }
   }
   // Stiffer than a quarter of the substep's rate, a spring would ring (Box2D caps it so too).
