@@ -42,16 +42,25 @@ struct Side {
   const CubicSegment* piece = nullptr;
   double lo = 0.0;  // interval
   double hi = 0.0;
+  double ref = 0.0;  // its reference point, in [lo, hi]
 };
 
-// The bound with `inner` in the disk about c and `outer` outside it: the exact extremes of the
-// squared distances to c over the intervals, widened by their rounding (which the square roots
-// would magnify where a distance is near zero).
-double bound_with(const Side& inner, const Side& outer, const Vec2& c) {
+// The bound with `inner` in the disk about c and `outer` outside it: the extremes of the squared
+// distances to c over the intervals, widened by their rounding (which the square roots would
+// magnify where a distance is near zero). `exact`: the extremes themselves (polynomial_range);
+// otherwise the Bernstein enclosures split at the reference points, which is as tight where
+// the circle touches each piece there only (polynomial_range.h) and far cheaper.
+double bound_with(const Side& inner, const Side& outer, const Vec2& c, bool exact) {
   const SquaredDistance in = squared_distance_to(*inner.piece, c);
   const SquaredDistance out = squared_distance_to(*outer.piece, c);
-  const double farthest_inner = polynomial_range(in.p, 6, inner.lo, inner.hi).hi + in.rounding;
-  const double nearest_outer = polynomial_range(out.p, 6, outer.lo, outer.hi).lo - out.rounding;
+  const PolynomialRange in_range = exact
+                                       ? polynomial_range(in.p, 6, inner.lo, inner.hi)
+                                       : polynomial_enclosure(in.p, inner.lo, inner.ref, inner.hi);
+  const PolynomialRange out_range =
+      exact ? polynomial_range(out.p, 6, outer.lo, outer.hi)
+            : polynomial_enclosure(out.p, outer.lo, outer.ref, outer.hi);
+  const double farthest_inner = in_range.hi + in.rounding;
+  const double nearest_outer = out_range.lo - out.rounding;
   return std::sqrt(std::max(0.0, nearest_outer)) - std::sqrt(farthest_inner);
 }
 
@@ -91,15 +100,16 @@ Fit fit_circles(const CubicSegment& piece, double at, double lo, double hi, cons
 }  // namespace
 
 double circle_separation_bound(const CubicSegment& a, const CubicSegment& b, double s_ref,
-                               double t_ref, double s0, double s1, double t0, double t1) {
+                               double t_ref, double s0, double s1, double t0, double t1,
+                               double needed) {
   const Vec2 pa = a.point(s_ref);
   const Vec2 pb = b.point(t_ref);
   const Vec2 r = pa - pb;
   const double d = r.norm();
   if (!(d > 0.0) || !std::isfinite(d)) return kNoBound;
   const Vec2 n = r / d;  // from B towards A
-  const Side side_a{&a, s0, s1};
-  const Side side_b{&b, t0, t1};
+  const Side side_a{&a, s0, s1, s_ref};
+  const Side side_b{&b, t0, t1, t_ref};
   // A circle with one piece inside through its reference point and the other outside through
   // its own: with A inside, the centre is pa + R·n and B must clear the circle of radius R + d
   // about it; with B inside, pb − R·n and A must clear R + d. The circle is chosen from the
@@ -122,10 +132,13 @@ double circle_separation_bound(const CubicSegment& a, const CubicSegment& b, dou
     const double r_hi = clears > 0.0 ? 1.0 / clears - d : std::numeric_limits<double>::infinity();
     if (!(r_hi >= r_lo)) return;
     const double radius = std::isfinite(r_hi) ? std::sqrt(r_lo * r_hi) : 2.0 * r_lo;
-    best = std::max(best, bound_with(inner, outer, Vec2(p_inner + radius * out)));
+    const Vec2 centre = p_inner + radius * out;
+    const double quick = bound_with(inner, outer, centre, /*exact=*/false);
+    best = std::max(best, quick >= needed ? quick : bound_with(inner, outer, centre, true));
   };
   try_inside(side_a, fit_a.holds, pa, side_b, fit_b.clears, n);
-  if (best < d) try_inside(side_b, -fit_b.clears, pb, side_a, -fit_a.holds, Vec2(-n));
+  if (best < d && best < needed)
+    try_inside(side_b, -fit_b.clears, pb, side_a, -fit_a.holds, Vec2(-n));
   return best;
 }
 

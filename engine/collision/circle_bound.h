@@ -18,6 +18,8 @@
 // lower, and the search halves the rectangle.
 #pragma once
 
+#include <limits>
+
 #include "engine/geometry/cubic_segment.h"
 
 namespace rugosim {
@@ -29,8 +31,11 @@ namespace rugosim {
 // rectangle (and their bends at the reference points), so that a piece whose curvature changes
 // along it, or whose reference point is its end, still fits. −infinity when no such circle
 // fits (both straight, or the convex one flatter than the concave one); the caller then falls
-// back on other bounds or on smaller rectangles.
+// back on other bounds or on smaller rectangles. Where a cheaper enclosure of the circle's
+// distances (polynomial_range.h) already gives at least `needed` (m), that bound is returned;
+// otherwise the exact extremes decide (always, by default).
 double circle_separation_bound(const CubicSegment& a, const CubicSegment& b, double s_ref,
-                               double t_ref, double s0, double s1, double t0, double t1);
+                               double t_ref, double s0, double s1, double t0, double t1,
+                               double needed = std::numeric_limits<double>::infinity());
 
 }  // namespace rugosim

@@ -21,4 +21,13 @@ struct PolynomialRange {
 // (the ends in either order).
 PolynomialRange polynomial_range(const Polynomial6& p, int degree, double lo, double hi);
 
+// An enclosure of the range of a sextic p over [lo, hi] (lo <= mid <= hi, within [0, 1]): the
+// extremes of its Bernstein coefficients over [lo, mid] and [mid, hi] (a polynomial lies within
+// the hull of its Bernstein coefficients), widened by what converting to them may round (the
+// coefficients' own rounding is the caller's, as for polynomial_range). A few dozen products
+// where polynomial_range isolates the roots of p' down to a quadratic; and exact up to rounding
+// where p is extreme at lo, mid or hi and bends away from there, as the circle certificate's
+// squared distances do at its reference points (circle_bound.h).
+PolynomialRange polynomial_enclosure(const Polynomial6& p, double lo, double mid, double hi);
+
 }  // namespace rugosim

@@ -61,7 +61,8 @@ double certified_bound(const CubicSegment& a, const CubicSegment& b, const Param
   if (!(d > 0.0)) return 0.0;
   const double slab = separating_axis_bound(a, b, r / d, box.s0, box.s1, box.t0, box.t1);
   if (slab >= needed) return slab;
-  return std::max(slab, circle_separation_bound(a, b, m.s, m.t, box.s0, box.s1, box.t0, box.t1));
+  return std::max(slab,
+                  circle_separation_bound(a, b, m.s, m.t, box.s0, box.s1, box.t0, box.t1, needed));
 }
 
 struct Cell {

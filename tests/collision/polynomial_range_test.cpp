@@ -82,5 +82,52 @@ TEST(PolynomialRange, ContainsAndMeetsDenseSampling) {
   }
 }
 
+// Property: the Bernstein enclosure holds every sampled value of random sextics on random
+// intervals within [0, 1], and never reaches beyond the exact range by more than rounding on the
+// side where the extreme sits at the split point and p bends away from it.
+TEST(PolynomialEnclosure, ContainsTheRangeAndIsExactAtAnExtremeWhereItSplits) {
+  Rng rng(62);
+  int tight = 0;
+  for (int c = 0; c < 3000; ++c) {
+    Polynomial6 p{};
+    for (double& k : p)
+      k = rng.normal() * std::pow(10.0, rng.uniform(-3.0, 3.0));
+    const double lo = rng.uniform(0.0, 0.8), hi = lo + rng.uniform(1e-3, 1.0 - lo);
+    double mid = rng.uniform(lo, hi);
+    if (c % 2 == 0) {
+      // A squared distance's shape: p = (x − mid)²·(1 + ...) + p0 has its minimum at mid.
+      mid = rng.uniform(lo, hi);
+      Polynomial6 q{};
+      const double p0 = rng.uniform(0.5, 2.0);
+      // (x − mid)² · (1 + e·x)  + p0, e small: minimum p0 at mid, rising on both sides.
+      const double e = rng.uniform(-0.2, 0.2);
+      const Polynomial6 square{mid * mid, -2.0 * mid, 1.0};
+      for (std::size_t k = 0; k < 3; ++k) {
+        q[k] += square[k];
+        q[k + 1] += e * square[k];
+      }
+      q[0] += p0;
+      p = q;
+    }
+    const PolynomialRange enclosure = polynomial_enclosure(p, lo, mid, hi);
+    const PolynomialRange exact = polynomial_range(p, 6, lo, hi);
+    double magnitude = 0.0;
+    for (const double k : p)
+      magnitude += std::abs(k) * 64.0;
+    ASSERT_LE(enclosure.lo, exact.lo + 1e-14 * magnitude) << "case " << c;
+    ASSERT_GE(enclosure.hi, exact.hi - 1e-14 * magnitude) << "case " << c;
+    for (int i = 0; i <= 1000; ++i) {
+      const double v = evaluate(p, lo + (hi - lo) * i / 1000.0);
+      ASSERT_GE(v, enclosure.lo) << "case " << c;
+      ASSERT_LE(v, enclosure.hi) << "case " << c;
+    }
+    if (c % 2 == 0) {
+      EXPECT_NEAR(enclosure.lo, exact.lo, 1e-13 * magnitude) << "case " << c;
+      ++tight;
+    }
+  }
+  EXPECT_EQ(tight, 1500);
+}
+
 }  // namespace
 }  // namespace rugosim
