@@ -45,23 +45,25 @@ struct Side {
   double ref = 0.0;  // its reference point, in [lo, hi]
 };
 
-// The bound with `inner` in the disk about c and `outer` outside it: the extremes of the squared
-// distances to c over the intervals, widened by their rounding (which the square roots would
-// magnify where a distance is near zero). `exact`: the extremes themselves (polynomial_range);
-// otherwise the Bernstein enclosures split at the reference points, which is as tight where
-// the circle touches each piece there only (polynomial_range.h) and far cheaper.
-double bound_with(const Side& inner, const Side& outer, const Vec2& c, bool exact) {
+// The bound with `inner` in the disk about c and `outer` outside it, from the extremes of the
+// squared distances to c over the intervals, widened by their rounding (which the square roots
+// would magnify where a distance is near zero). First from the Bernstein enclosures split at the
+// reference points, which are as tight where the circle touches each piece there only
+// (polynomial_range.h) and far cheaper; where that falls short of `needed`, from the exact
+// extremes (polynomial_range) of the same polynomials.
+double bound_with(const Side& inner, const Side& outer, const Vec2& c, double needed) {
   const SquaredDistance in = squared_distance_to(*inner.piece, c);
   const SquaredDistance out = squared_distance_to(*outer.piece, c);
-  const PolynomialRange in_range = exact
-                                       ? polynomial_range(in.p, 6, inner.lo, inner.hi)
-                                       : polynomial_enclosure(in.p, inner.lo, inner.ref, inner.hi);
-  const PolynomialRange out_range =
-      exact ? polynomial_range(out.p, 6, outer.lo, outer.hi)
-            : polynomial_enclosure(out.p, outer.lo, outer.ref, outer.hi);
-  const double farthest_inner = in_range.hi + in.rounding;
-  const double nearest_outer = out_range.lo - out.rounding;
-  return std::sqrt(std::max(0.0, nearest_outer)) - std::sqrt(farthest_inner);
+  const auto bound = [&](const PolynomialRange& in_range, const PolynomialRange& out_range) {
+    const double farthest_inner = in_range.hi + in.rounding;
+    const double nearest_outer = out_range.lo - out.rounding;
+    return std::sqrt(std::max(0.0, nearest_outer)) - std::sqrt(farthest_inner);
+  };
+  const double quick = bound(polynomial_enclosure(in.p, inner.lo, inner.ref, inner.hi),
+                             polynomial_enclosure(out.p, outer.lo, outer.ref, outer.hi));
+  if (quick >= needed) return quick;
+  return bound(polynomial_range(in.p, 6, inner.lo, inner.hi),
+               polynomial_range(out.p, 6, outer.lo, outer.hi));
 }
 
 // The circles through a point p of a piece, tangent there to the line across `direction`, with
@@ -132,9 +134,7 @@ double circle_separation_bound(const CubicSegment& a, const CubicSegment& b, dou
     const double r_hi = clears > 0.0 ? 1.0 / clears - d : std::numeric_limits<double>::infinity();
     if (!(r_hi >= r_lo)) return;
     const double radius = std::isfinite(r_hi) ? std::sqrt(r_lo * r_hi) : 2.0 * r_lo;
-    const Vec2 centre = p_inner + radius * out;
-    const double quick = bound_with(inner, outer, centre, /*exact=*/false);
-    best = std::max(best, quick >= needed ? quick : bound_with(inner, outer, centre, true));
+    best = std::max(best, bound_with(inner, outer, Vec2(p_inner + radius * out), needed));
   };
   try_inside(side_a, fit_a.holds, pa, side_b, fit_b.clears, n);
   if (best < d && best < needed)

@@ -92,8 +92,8 @@ int roots_inside(const Polynomial6& p, int degree, double lo, double hi, double*
 }
 
 // The Bernstein coefficients of the sextic p over [u0, u1] into `range` (grown to hold them),
-// with p(u0 + (u1 − u0)·v) = Σ b_k·C(6,k)·v^k·(1 − v)^(6−k). Returns a bound of their rounding.
-double add_bernstein_hull(const Polynomial6& p, double u0, double u1, PolynomialRange& range) {
+// with p(u0 + (u1 − u0)·v) = Σ b_k·C(6,k)·v^k·(1 − v)^(6−k).
+void add_bernstein_hull(const Polynomial6& p, double u0, double u1, PolynomialRange& range) {
   // Taylor shift to u0 (repeated synthetic division), then scale by h^j: q(v) = p(u0 + h·v).
   Polynomial6 q = p;
   for (int k = 0; k < 6; ++k) {
@@ -123,13 +123,6 @@ double add_bernstein_hull(const Polynomial6& p, double u0, double u1, Polynomial
     range.lo = std::min(range.lo, b);
     range.hi = std::max(range.hi, b);
   }
-  // Every q_j sums C(k, j)·|p_k|·u0^(k−j)·h^j <= C(k, j)·|p_k| over k (u0, h in [0, 1]) in a
-  // dozen roundings, and every b_k at most seven q_j with weights <= 1: 26·ε·Σ 2^k·|p_k|, taken
-  // with a margin.
-  double magnitude = 0.0;
-  for (std::size_t k = 0, power = 1; k < 7; ++k, power *= 2)
-    magnitude += static_cast<double>(power) * std::abs(p[k]);
-  return 64.0 * std::numeric_limits<double>::epsilon() * magnitude;
 }
 
 }  // namespace
@@ -137,10 +130,16 @@ double add_bernstein_hull(const Polynomial6& p, double u0, double u1, Polynomial
 PolynomialRange polynomial_enclosure(const Polynomial6& p, double lo, double mid, double hi) {
   PolynomialRange range{std::numeric_limits<double>::infinity(),
                         -std::numeric_limits<double>::infinity()};
-  double rounding = 0.0;
-  if (mid > lo) rounding = add_bernstein_hull(p, lo, mid, range);
-  if (hi > mid) rounding = std::max(rounding, add_bernstein_hull(p, mid, hi, range));
-  if (!(hi > lo)) rounding = add_bernstein_hull(p, lo, hi, range);
+  if (mid > lo) add_bernstein_hull(p, lo, mid, range);
+  if (hi > mid) add_bernstein_hull(p, mid, hi, range);
+  if (!(hi > lo)) add_bernstein_hull(p, lo, hi, range);
+  // What converting may round, on either half: every q_j sums C(k, j)·|p_k|·u0^(k−j)·h^j <=
+  // C(k, j)·|p_k| over k (u0, h in [0, 1]) in a dozen roundings, and every b_k at most seven q_j
+  // with weights <= 1: 26·ε·Σ 2^k·|p_k|, taken with a margin.
+  double magnitude = 0.0;
+  for (std::size_t k = 0, power = 1; k < 7; ++k, power *= 2)
+    magnitude += static_cast<double>(power) * std::abs(p[k]);
+  const double rounding = 64.0 * std::numeric_limits<double>::epsilon() * magnitude;
   range.lo -= rounding;
   range.hi += rounding;
   return range;
